@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Install what RayCache needs from Debian bookworm, idempotently: a no-op when all is there.
+# Usage: scripts/setup.sh [--with-browser]   (run as root, or with sudo available)
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libglm-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
+  qt6-base-dev libqt6charts6-dev libgl-dev
+  doxygen graphviz doxygen-awesome-css libjs-mathjax
+  clang libclang-rt-14-dev
+  xvfb xauth
+)
+if [[ "${1:-}" == "--with-browser" ]]; then packages+=(chromium); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,148 @@
+#include "cli/commands.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include "analysis/beam_tree.h"
+#include "render/output_files.h"
+#include "render/report.h"
+#include "scene/builtin_scenes.h"
+
+namespace rc::cli {
+
+namespace {
+const std::vector<std::string> kCaches{"none", "cylinder", "blocker"};
+const std::vector<std::string> kOrders{"scanline", "progressive", "bfs"};
+
+void addRenderFlags(CLI::App* c, RenderFlags& f) {
+    c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
+    c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, 16384));
+    c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
+        ->check(CLI::Range(1, 64))->capture_default_str();
+    c->add_option("--cutoff", f.cutoff, "rays whose weight is below this are not spawned (0: off)")
+        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+    c->add_option("--band", f.band, "scanlines per band in bfs and progressive orders (0: whole image)")
+        ->check(CLI::Range(0, 16384))->capture_default_str();
+    c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter")->capture_default_str();
+}
+}  // namespace
+
+RenderOptions RenderFlags::options() const {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.cache = *parseCacheKind(cache);
+    o.order = *parseOrderKind(order);
+    o.shading.maxDepth = depth;
+    o.shading.cutoff = cutoff;
+    o.band = band;
+    o.verify = verify;
+    return o;
+}
+
+void Commands::addTo(CLI::App& app) {
+    renderCmd_ = app.add_subcommand("render", "render a scene to PNG and report what it took");
+    renderCmd_->add_option("scene", scene_, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
+        ->required();
+    renderCmd_->add_option("-o,--output", out_, "PNG file to write");
+    renderCmd_->add_option("--stats", stats_, "statistics JSON file to write");
+    renderCmd_->add_option("--cache", flags_.cache, "none | cylinder | blocker")
+        ->check(CLI::IsMember(kCaches))->capture_default_str();
+    renderCmd_->add_option("--order", flags_.order, "scanline | progressive | bfs")
+        ->check(CLI::IsMember(kOrders))->capture_default_str();
+    renderCmd_->add_flag("--verify", flags_.verify, "run the complete search beside every cached answer");
+    renderCmd_->add_flag("-q,--quiet", quiet_, "no progress line or summary");
+    addRenderFlags(renderCmd_, flags_);
+
+    infoCmd_ = app.add_subcommand("info", "what a scene holds and which rays it can produce");
+    infoCmd_->add_option("scene", scene_, "an .nff file or a built-in")->required();
+    infoCmd_->add_option("--seed", flags_.seed, "seed of the built-in scenes' jitter");
+
+    scenesCmd_ = app.add_subcommand("scenes", "list the built-in scenes");
+
+    table1Cmd_ = app.add_subcommand("table1", "reproduce the paper's Table 1 on cube:N");
+    table1Cmd_->add_option("--sizes", sizes_, "values of N, e.g. 3,4,5")->delimiter(',')
+        ->check(CLI::Range(1, 64))->capture_default_str();
+    table1Cmd_->add_option("--repeat", repeat_, "repeats; times are medians")->check(CLI::Range(1, 100))
+        ->capture_default_str();
+    table1Cmd_->add_option("--csv", csv_, "also write the table as CSV");
+    addRenderFlags(table1Cmd_, flags_);
+}
+
+int Commands::run() {
+    if (*renderCmd_) return render();
+    if (*infoCmd_) return info();
+    if (*scenesCmd_) return scenes();
+    if (*table1Cmd_) return table1();
+    return 2;
+}
+
+int Commands::render() {
+    auto scene = std::make_shared<const Scene>(loadScene(scene_, flags_.seed));
+    RenderSession session(scene, flags_.options());
+    BeamTreeBuilder beams(session.width(), session.height());
+    if (!stats_.empty()) session.addSink(&beams);
+
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    bool shown = false;
+    session.run([&](double done) {
+        const double s = std::chrono::duration<double>(Clock::now() - start).count();
+        if (!quiet_ && s > 1.0) {
+            std::fprintf(stderr, "\rrendering %s: %5.1f%%  %6.1f s", scene->name.c_str(), 100.0 * done, s);
+            shown = true;
+        }
+        return true;
+    });
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (shown) std::fprintf(stderr, "\n");
+
+    if (!out_.empty()) writePng(out_, session.width(), session.height(), session.image().rgb8());
+    const Counters& n = session.counters();
+    if (!stats_.empty()) {
+        const BeamTreeStats b = beams.build();
+        writeTextFile(stats_, statsJson(session, seconds, &b).dump(2) + "\n");
+    }
+    if (!quiet_) {
+        std::printf("%s %dx%d cache=%s order=%s: %.3f s, %llu rays, %llu intersection tests, "
+                    "%llu complete searches, %llu hits, %llu misses%s\n",
+                    scene->name.c_str(), session.width(), session.height(), flags_.cache.c_str(),
+                    flags_.order.c_str(), seconds, (unsigned long long)n.totalRays(),
+                    (unsigned long long)n.intersectionTests, (unsigned long long)n.completeSearches,
+                    (unsigned long long)n.hits, (unsigned long long)n.misses,
+                    flags_.verify ? (", " + std::to_string(n.verifyDisagreements) + " disagreements").c_str() : "");
+    }
+    return flags_.verify && n.verifyDisagreements > 0 ? 1 : 0;
+}
+
+int Commands::info() {
+    const Scene s = loadScene(scene_, flags_.seed);
+    int transparent = 0, reflective = 0;
+    for (const Object& o : s.objects) {
+        transparent += s.materials[o.material].kt > 0.0;
+        reflective += s.materials[o.material].ks > 0.0;
+    }
+    const Vec3 lo = s.bound.c - Vec3(s.bound.r), hi = s.bound.c + Vec3(s.bound.r);
+    std::printf("scene      %s\n", s.name.c_str());
+    std::printf("spheres    %zu\npolygons   %zu\nlights     %zu\nmaterials  %zu\n", s.spheres.size(),
+                s.polygons.size(), s.lights.size(), s.materials.size());
+    std::printf("resolution %dx%d\n", s.camera.width, s.camera.height);
+    std::printf("bound      centre (%g, %g, %g) radius %g  (box (%g, %g, %g)-(%g, %g, %g))\n", s.bound.c.x,
+                s.bound.c.y, s.bound.c.z, s.bound.r, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    std::printf("rays       primary%s%s%s\n", s.lights.empty() ? "" : ", shadow",
+                reflective ? ", reflection" : "", transparent ? ", refraction" : "");
+    std::printf("objects    %d reflective, %d transparent\n", reflective, transparent);
+    return 0;
+}
+
+int Commands::scenes() {
+    for (const BuiltinInfo& b : builtinScenes()) std::printf("%-10s %s\n", b.name.c_str(), b.description.c_str());
+    return 0;
+}
+
+}  // namespace rc::cli

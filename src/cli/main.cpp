@@ -1,0 +1,41 @@
+// raycache: the command-line tool. Renders scenes with any cache and order, reports what
+// each did, and reproduces the paper's Table 1.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "scene/scene.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"RayCache: caching and breadth-first search to speed up ray tracing (Hanrahan 1986)"};
+    app.require_subcommand(1);
+    rc::cli::Commands commands;
+    commands.addTo(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+    try {
+        return commands.run();
+    } catch (const rc::SceneError& e) {
+        std::cerr << "raycache: " << e.what() << "\n";
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "raycache: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "raycache: " << e.what() << "\n";
+        return 1;
+    }
+}

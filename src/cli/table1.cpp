@@ -1,0 +1,90 @@
+// `raycache table1`: the paper's Table 1, measured: every configuration interleaved in
+// one run, so the time ratios hold on a noisy machine.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "analysis/beam_tree.h"
+#include "cli/commands.h"
+#include "render/output_files.h"
+#include "scene/builtin_scenes.h"
+
+namespace rc::cli {
+
+namespace {
+struct Config {
+    const char* cache;
+    const char* order;
+};
+const Config kConfigs[] = {{"none", "scanline"}, {"cylinder", "scanline"}, {"blocker", "scanline"},
+                           {"cylinder", "bfs"},  {"blocker", "bfs"}};
+// Hanrahan 1986, Table 1: "Cached" and "Cached, breadth-first" for N = 3, 4, 5
+const std::map<int, std::pair<double, double>> kPaper{{3, {0.53, 0.25}}, {4, {0.29, 0.15}}, {5, {0.20, 0.11}}};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+}  // namespace
+
+int Commands::table1() {
+    RenderFlags flags = flags_;
+    if (flags.width == 0) flags.width = 256;
+    if (flags.height == 0) flags.height = flags.width;
+    std::ostringstream csv;
+    csv << "N,cache,order,seconds,time_ratio,intersection_tests,tests_ratio,complete_searches,"
+           "beam_nodes,searches_per_beam,paper_time_ratio\n";
+    std::printf("Table 1: cube:N at %dx%d, depth %d, median of %d runs; time and intersection tests\n"
+                "relative to no cache, complete searches per beam-tree node, the paper's figure beside.\n",
+                flags.width, flags.height, flags.depth, repeat_);
+    for (int N : sizes_) {
+        auto scene = std::make_shared<const Scene>(makeBuiltin("cube:" + std::to_string(N), flags.seed));
+        const int configs = int(std::size(kConfigs));
+        std::vector<std::vector<double>> times(configs);
+        std::vector<Counters> counts(configs);
+        BeamTreeStats beams;
+        for (int r = 0; r < repeat_; ++r) {
+            for (int c = 0; c < configs; ++c) {
+                flags.cache = kConfigs[c].cache;
+                flags.order = kConfigs[c].order;
+                RenderSession session(scene, flags.options());
+                BeamTreeBuilder builder(session.width(), session.height());
+                const bool wantBeams = r == 0 && c == 0;
+                if (wantBeams) session.addSink(&builder);
+                const auto start = std::chrono::steady_clock::now();
+                session.run();
+                times[c].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                counts[c] = session.counters();
+                if (wantBeams) beams = builder.build();
+            }
+        }
+        const double t0 = median(times[0]);
+        const double tests0 = double(counts[0].intersectionTests);
+        std::printf("\nN=%d: %d spheres; beam tree %lld nodes, %.2f rays per pixel, coherence %.2e\n", N,
+                    scene->size(), (long long)beams.nodes, beams.averageRayTreeSize, beams.coherence);
+        std::printf("  %-20s %8s %7s %8s %10s %13s\n", "configuration", "seconds", "time", "paper", "tests",
+                    "searches/beam");
+        for (int c = 0; c < configs; ++c) {
+            const double t = median(times[c]);
+            const double perBeam = beams.nodes ? double(counts[c].completeSearches) / double(beams.nodes) : 0.0;
+            std::string paper = "-";
+            auto it = kPaper.find(N);
+            if (c == 0) paper = "1.00";
+            else if (it != kPaper.end() && std::string(kConfigs[c].cache) == "blocker")
+                paper = std::to_string(std::string(kConfigs[c].order) == "bfs" ? it->second.second : it->second.first).substr(0, 4);
+            const std::string name = std::string(kConfigs[c].cache) + ", " + kConfigs[c].order;
+            std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f\n", name.c_str(), t, t / t0, paper.c_str(),
+                        double(counts[c].intersectionTests) / tests0, perBeam);
+            csv << N << ',' << kConfigs[c].cache << ',' << kConfigs[c].order << ',' << t << ',' << t / t0 << ','
+                << counts[c].intersectionTests << ',' << double(counts[c].intersectionTests) / tests0 << ','
+                << counts[c].completeSearches << ',' << beams.nodes << ',' << perBeam << ',' << paper << '\n';
+        }
+    }
+    if (!csv_.empty()) writeTextFile(csv_, csv.str());
+    return 0;
+}
+
+}  // namespace rc::cli

@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// \brief The convex hull of two spheres ("round cone"), where blockers must lie.
+///
+/// Any segment from a point of sphere A to a point of sphere B lies in the convex hull
+/// of A and B: both spheres plus their common external tangent cone. A point (the eye,
+/// a light) is a sphere of radius 0, so eye-to-sphere and light cones are the same
+/// shape. One sphere inside the other gives the larger sphere.
+#include "geometry/sphere.h"
+
+namespace rc {
+
+/// Signed distance from `p` to the hull of spheres `a` and `b`: exact outside the
+/// hull, negative inside it.
+double hullDistance(const Vec3& p, const Sphere& a, const Sphere& b);
+
+/// Does sphere `s` meet the hull of `a` and `b`? `slack` widens the test (a list may
+/// hold extra spheres, never miss one).
+bool meetsHull(const Sphere& s, const Sphere& a, const Sphere& b, double slack);
+
+/// Half-angle (radians) of the tangent cone of two spheres: asin((ra - rb) / D).
+/// Negative when `b` is the larger one; 0 for equal radii (a cylinder).
+double hullHalfAngle(const Sphere& a, const Sphere& b);
+
+}  // namespace rc

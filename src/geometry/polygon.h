@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// \brief Convex planar polygons (NFF `p` and `pp`).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/ray.h"
+#include "geometry/sphere.h"
+
+namespace rc {
+
+/// A convex planar polygon. The plane normal comes from Newell's method, so either
+/// winding works; `vertexNormals` is empty unless the polygon came from `pp`.
+struct Polygon {
+    std::vector<Vec3> vertices;
+    std::vector<Vec3> vertexNormals;
+    Vec3 normal{0.0, 0.0, 1.0};  ///< unit plane normal
+    double offset = 0.0;         ///< plane: dot(normal, x) = offset
+};
+
+/// Builds a polygon from its vertices (and optional per-vertex normals). Returns an
+/// explanation instead when the polygon has fewer than three vertices, is degenerate
+/// (zero area), or is not planar and convex.
+std::optional<std::string> makePolygon(std::vector<Vec3> vertices, std::vector<Vec3> normals,
+                                       Polygon& out);
+
+/// Hit distance of a ray with the polygon, or kNoHit. A ray leaving the polygon's
+/// plane cannot meet that plane again: pass `fromThis` and it is skipped.
+double intersectPolygon(const Ray& ray, const Polygon& poly, bool fromThis);
+
+/// The smallest sphere around the vertices' bounding box centre holding every vertex:
+/// how polygons take part in safety cylinders and blocker hulls.
+Sphere boundingSphere(const Polygon& poly);
+
+/// Shading normal at point `p` of the polygon: interpolated for `pp`, else the plane's.
+Vec3 polygonNormal(const Polygon& poly, const Vec3& p);
+
+}  // namespace rc

@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// \brief Breadth-first order: a seed fill (Smith's tint fill) over each ray-tree path.
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "order/ray_order.h"
+
+namespace rc {
+
+/// "In order to achieve one complete search per region the search should continue
+/// two-dimensionally until a cache miss occurs" (Hanrahan 1986).
+///
+/// Works on a band of scanlines at a time, and within it on one ray-tree path at a time:
+/// first every eye ray of the band, then the rays they spawned, path by path (the
+/// breadth-first search of the ray tree). Each path is filled region by region: a seed
+/// ray is traced (searching if it must), then its 4-neighbours are tried with the cheap
+/// cache test only; those that hit extend the region, those that cannot be answered
+/// cheaply are deferred and seed later regions, once the current one is finished.
+class BreadthFirstOrder final : public RayOrder {
+public:
+    BreadthFirstOrder(int width, int height, int band, bool cheapTests, EyeMaker makeEye);
+    OrderKind kind() const override { return OrderKind::BreadthFirst; }
+    std::optional<Pick> next() override;
+    void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
+    void deferred(const RayTask& task) override;
+    std::size_t queuePeak() const override { return peak_; }
+    std::int64_t regions() const override { return regions_; }
+    FrontierView frontier() const override;
+    /// Scanlines per band.
+    int band() const { return band_; }
+
+private:
+    enum State : std::uint8_t { Absent, Unvisited, Queued, Deferred, Done };
+    bool beginPath();
+    void enqueueNeighbours(int local);
+
+    int width_, height_, band_;
+    bool cheapTests_;
+    EyeMaker makeEye_;
+    int bandRow_ = 0;   ///< first scanline of the current band
+    int nextRow_ = 0;   ///< first scanline of the next band
+    // Rays of the current generation by path, the path being filled, and the next generation
+    std::vector<std::pair<int, std::vector<RayTask>>> generation_;
+    std::size_t pathIndex_ = 0;
+    bool pathActive_ = false;
+    std::map<int, std::vector<RayTask>> nextGeneration_;
+    // Fill state of the active path, over the pixels of the band
+    std::vector<int> slot_;
+    std::vector<State> state_;
+    std::deque<int> queue_;
+    std::deque<int> pending_;
+    int scan_ = 0;
+    int inflight_ = -1;
+    bool inflightSeed_ = false;
+    std::size_t peak_ = 0;
+    std::int64_t regions_ = 0;
+};
+
+}  // namespace rc

@@ -1,0 +1,29 @@
+#include "order/progressive_order.h"
+
+#include <algorithm>
+
+namespace rc {
+
+ProgressiveOrder::ProgressiveOrder(int width, int height, int band, EyeMaker makeEye)
+    : width_(width), height_(height), band_(band > 0 ? band : height), makeEye_(std::move(makeEye)) {}
+
+std::optional<Pick> ProgressiveOrder::next() {
+    if (queue_.empty()) {
+        if (nextRow_ >= height_) return std::nullopt;
+        // A new band: its eye rays first
+        const int end = std::min(height_, nextRow_ + band_);
+        for (int p = nextRow_ * width_; p < end * width_; ++p) queue_.push_back(makeEye_(p));
+        nextRow_ = end;
+        peak_ = std::max(peak_, queue_.size());
+    }
+    Pick p{std::move(queue_.front()), LookupMode::Full};
+    queue_.pop_front();
+    return p;
+}
+
+void ProgressiveOrder::committed(const RayTask&, Decision, std::vector<RayTask>& children) {
+    for (RayTask& c : children) queue_.push_back(std::move(c));
+    peak_ = std::max(peak_, queue_.size());
+}
+
+}  // namespace rc

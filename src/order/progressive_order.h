@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// \brief Progressive order: the hidden-surface view first, then deeper rays.
+#include <deque>
+
+#include "order/ray_order.h"
+
+namespace rc {
+
+/// "If each ray is immediately painted onto the image after it is traced, then ... first
+/// the hidden surface view will be drawn, followed by reflections and shadows at greater
+/// and greater depth" (Hanrahan 1986). A FIFO over the ray trees of a band of scanlines.
+class ProgressiveOrder final : public RayOrder {
+public:
+    ProgressiveOrder(int width, int height, int band, EyeMaker makeEye);
+    OrderKind kind() const override { return OrderKind::Progressive; }
+    std::optional<Pick> next() override;
+    void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
+    std::size_t queuePeak() const override { return peak_; }
+
+private:
+    int width_, height_, band_;
+    int nextRow_ = 0;
+    EyeMaker makeEye_;
+    std::deque<RayTask> queue_;
+    std::size_t peak_ = 0;
+};
+
+}  // namespace rc

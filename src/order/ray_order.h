@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// \brief The order in which rays are traced: a strategy of its own, usable with any cache.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "search/cache_strategy.h"
+#include "trace/ray_task.h"
+
+namespace rc {
+
+/// Which order visits the rays.
+enum class OrderKind {
+    Scanline,     ///< pixel after pixel, each pixel's ray tree depth first
+    Progressive,  ///< all eye rays, then all rays of depth 2, ... (the paper's conclusion)
+    BreadthFirst, ///< seed fill of each ray-tree path: one coherent region after another
+};
+std::string_view toString(OrderKind k);
+std::optional<OrderKind> parseOrderKind(std::string_view s);
+
+/// The next ray to trace and how far its lookup may go.
+struct Pick {
+    RayTask task;
+    LookupMode mode = LookupMode::Full;
+};
+
+/// A pixel on the breadth-first frontier, for display.
+struct FrontierView {
+    std::vector<int> queued;    ///< pixels waiting in the fill queue
+    std::vector<int> deferred;  ///< pixels whose cheap test failed: seeds of later regions
+    int path = -1;              ///< the ray-tree path being filled
+    std::int64_t region = 0;    ///< regions begun so far
+};
+
+/// Hands out rays one at a time and learns what became of them.
+class RayOrder {
+public:
+    /// `makeEye(pixel)` makes the eye ray of a pixel.
+    using EyeMaker = std::function<RayTask(int pixel)>;
+    virtual ~RayOrder() = default;
+    virtual OrderKind kind() const = 0;
+    /// The next ray, or nothing when the image is done.
+    virtual std::optional<Pick> next() = 0;
+    /// The ray last picked was traced; `children` are the rays it spawned.
+    virtual void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) = 0;
+    /// The ray last picked could not be answered cheaply: it waits.
+    virtual void deferred(const RayTask&) {}
+    /// Largest number of rays queued at once (tasks held for later).
+    virtual std::size_t queuePeak() const = 0;
+    /// Coherent regions begun (breadth-first), else 0.
+    virtual std::int64_t regions() const { return 0; }
+    /// Does a miss at a path flush the entries beneath it? Only when a pixel's ray tree is
+    /// traced depth first: then the children's next rays really do start elsewhere.
+    virtual bool flushesChildren() const { return false; }
+    virtual FrontierView frontier() const { return {}; }
+};
+
+/// Makes an order for an image. `band` is the number of scanlines breadth-first and
+/// progressive orders work on at a time (0: the whole image). `cheapTests`: whether
+/// the cache can answer cheaply (false with no cache: every ray then extends the fill).
+std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int height, int band,
+                                    bool cheapTests, RayOrder::EyeMaker makeEye);
+
+}  // namespace rc

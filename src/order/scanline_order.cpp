@@ -1,0 +1,23 @@
+#include "order/scanline_order.h"
+
+#include <algorithm>
+
+namespace rc {
+
+std::optional<Pick> ScanlineOrder::next() {
+    if (stack_.empty()) {
+        if (nextPixel_ >= pixels_) return std::nullopt;
+        stack_.push_back(makeEye_(nextPixel_++));
+    }
+    Pick p{std::move(stack_.back()), LookupMode::Full};
+    stack_.pop_back();
+    return p;
+}
+
+void ScanlineOrder::committed(const RayTask&, Decision, std::vector<RayTask>& children) {
+    // Depth first: the children go on the stack, the first spawned on top
+    for (auto it = children.rbegin(); it != children.rend(); ++it) stack_.push_back(std::move(*it));
+    peak_ = std::max(peak_, stack_.size());
+}
+
+}  // namespace rc

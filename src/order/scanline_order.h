@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// \brief Scanline order: pixel after pixel, each ray tree depth first.
+#include "order/ray_order.h"
+
+namespace rc {
+
+/// The standard ray tracer's order: row by row, and within a pixel the ray tree depth
+/// first (a stack), the way a recursive tracer visits it.
+class ScanlineOrder final : public RayOrder {
+public:
+    ScanlineOrder(int pixels, EyeMaker makeEye) : pixels_(pixels), makeEye_(std::move(makeEye)) {}
+    OrderKind kind() const override { return OrderKind::Scanline; }
+    std::optional<Pick> next() override;
+    void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
+    std::size_t queuePeak() const override { return peak_; }
+    bool flushesChildren() const override { return true; }
+
+private:
+    int pixels_;
+    int nextPixel_ = 0;
+    EyeMaker makeEye_;
+    std::vector<RayTask> stack_;
+    std::size_t peak_ = 0;
+};
+
+}  // namespace rc

@@ -1,0 +1,99 @@
+#include "render/render_session.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rc {
+
+namespace {
+RenderOptions resolved(const Scene& scene, RenderOptions o) {
+    if (o.width <= 0) o.width = scene.camera.width;
+    if (o.height <= 0) o.height = scene.camera.height;
+    if (o.width <= 0 || o.height <= 0) throw std::invalid_argument("image size must be positive");
+    if (o.shading.maxDepth < 1) throw std::invalid_argument("depth must be at least 1");
+    return o;
+}
+}  // namespace
+
+RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options)
+    : scene_(std::move(scene)),
+      options_(resolved(*scene_, options)),
+      camera_(scene_->camera, options_.width, options_.height),
+      search_(*scene_),
+      strategy_(makeStrategy(options_.cache, *scene_, search_)),
+      image_(options_.width, options_.height) {
+    order_ = makeOrder(options_.order, options_.width, options_.height, options_.band,
+                       strategy_->caches(), [this](int pixel) {
+                           ++primaries_;
+                           return primaryTask(primaryRay(pixel), pixel);
+                       });
+}
+
+RenderSession::~RenderSession() = default;
+
+Ray RenderSession::primaryRay(int pixel) const {
+    return camera_.primary(pixel % options_.width, pixel / options_.width);
+}
+
+double RenderSession::progress() const {
+    if (done_) return 1.0;
+    return double(primaries_) / (double(options_.width) * options_.height);
+}
+
+void RenderSession::removeSink(TraceSink* sink) {
+    sinks_.erase(std::remove(sinks_.begin(), sinks_.end(), sink), sinks_.end());
+}
+
+bool RenderSession::step() {
+    if (done_) return false;
+    while (std::optional<Pick> pick = order_->next()) {
+        const RayTask& task = pick->task;
+        CacheEntry& entry = paths_.entry(task.node);
+        // [session-step]
+        // Ask the cache at this ray's path in the cache tree
+        const std::uint64_t testsBefore = counters_.intersectionTests;
+        const Lookup lookup = strategy_->lookup(task.query, entry, pick->mode, counters_);
+        TraceEvent event{steps_, task, lookup, int(counters_.intersectionTests - testsBefore), false};
+        if (!lookup.known) {
+            // Breadth-first: the cheap test failed; the ray waits for a later region
+            ++counters_.deferrals;
+            event.deferred = true;
+            for (TraceSink* s : sinks_) s->onEvent(event);
+            order_->deferred(task);
+            continue;
+        }
+        ++counters_.rays[int(task.query.kind)];
+        if (lookup.decision == Decision::Hit) ++counters_.hits;
+        if (lookup.decision == Decision::Miss) {
+            ++counters_.misses;
+            ++counters_.missReasons[int(lookup.reason)];
+            // A miss at a parent flushes the entries of its children
+            if (order_->flushesChildren()) paths_.flushBelow(task.node);
+        }
+        if (options_.verify && lookup.decision != Decision::Uncached) {
+            Counters scratch;
+            if (!(search_.nearest(task.query, scratch) == lookup.answer)) ++counters_.verifyDisagreements;
+        }
+        // Shade: add to the pixel, spawn the children
+        children_.clear();
+        shade(*scene_, task, lookup.answer, options_.shading, paths_, image_, children_);
+        // [session-step]
+        for (TraceSink* s : sinks_) s->onEvent(event);
+        order_->committed(task, lookup.decision, children_);
+        ++steps_;
+        return true;
+    }
+    done_ = true;
+    return false;
+}
+
+bool RenderSession::run(const std::function<bool(double)>& progress) {
+    std::int64_t n = 0;
+    while (step()) {
+        if (progress && (++n & 0xFFFF) == 0 && !progress(this->progress())) return false;
+    }
+    if (progress) progress(1.0);
+    return true;
+}
+
+}  // namespace rc

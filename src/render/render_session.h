@@ -1,0 +1,81 @@
+#pragma once
+/// \file
+/// \brief A render: scene, cache strategy and order tied together, advanced one ray per step.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "order/ray_order.h"
+#include "search/cache_strategy.h"
+#include "trace/shading.h"
+#include "trace/trace_event.h"
+
+namespace rc {
+
+/// Everything a render is told.
+struct RenderOptions {
+    int width = 0;    ///< 0: the scene's own resolution
+    int height = 0;
+    CacheKind cache = CacheKind::None;
+    OrderKind order = OrderKind::Scanline;
+    ShadingOptions shading;
+    int band = 16;        ///< scanlines per band in breadth-first and progressive orders (0: all)
+    bool verify = false;  ///< run the complete search beside every cached answer
+};
+
+/// A render in progress. `step()` traces exactly one ray: the order picks it, the cache
+/// strategy answers it at its ray-tree path, shading adds to its pixel and spawns its
+/// children, and every attached sink hears about it.
+class RenderSession {
+public:
+    RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options);
+    ~RenderSession();
+
+    /// Traces one ray. Returns false when the image is complete.
+    bool step();
+    /// Traces the rest. `progress(done fraction)` is called now and then; it returns
+    /// false to stop early (cancel). Returns true when the image is complete.
+    bool run(const std::function<bool(double)>& progress = {});
+    bool done() const { return done_; }
+
+    /// Attaches a sink; it must outlive the session or be removed.
+    void addSink(TraceSink* sink) { sinks_.push_back(sink); }
+    void removeSink(TraceSink* sink);
+
+    const Scene& scene() const { return *scene_; }
+    std::shared_ptr<const Scene> scenePtr() const { return scene_; }
+    const RenderOptions& options() const { return options_; }
+    int width() const { return options_.width; }
+    int height() const { return options_.height; }
+    const Counters& counters() const { return counters_; }
+    const ImageAccumulator& image() const { return image_; }
+    const CacheTree& cacheTree() const { return paths_; }
+    const CacheStrategy& strategy() const { return *strategy_; }
+    const RayOrder& order() const { return *order_; }
+    /// Rays traced so far (deferred attempts not included).
+    std::int64_t steps() const { return steps_; }
+    /// The eye ray of a pixel.
+    Ray primaryRay(int pixel) const;
+    /// Eye rays not yet started, as a fraction of all pixels (for progress).
+    double progress() const;
+
+private:
+    std::shared_ptr<const Scene> scene_;
+    RenderOptions options_;
+    RayGenerator camera_;
+    LinearSearch search_;
+    std::unique_ptr<CacheStrategy> strategy_;
+    std::unique_ptr<RayOrder> order_;
+    CacheTree paths_;
+    ImageAccumulator image_;
+    Counters counters_;
+    std::vector<TraceSink*> sinks_;
+    std::vector<RayTask> children_;
+    std::int64_t steps_ = 0;
+    std::int64_t primaries_ = 0;
+    bool done_ = false;
+};
+
+}  // namespace rc

@@ -1,0 +1,239 @@
+#include "scene/builtin_scenes.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <system_error>
+
+#include <glm/geometric.hpp>
+
+#include "scene/nff_reader.h"
+
+namespace rc {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxCube = 64;
+
+/// Portable random doubles: mt19937_64's output sequence is fixed by the standard, and
+/// the conversion to [0, 1) is done here, not by a library distribution.
+class Random {
+public:
+    explicit Random(std::uint64_t seed) : gen_(seed) {}
+    /// Uniform in [0, 1), 53 random bits.
+    double unit() { return double(gen_() >> 11) * 0x1.0p-53; }
+    double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
+    int index(int n) { return int(unit() * n); }
+
+private:
+    std::mt19937_64 gen_;
+};
+
+Material mat(Vec3 color, double kd, double ks, double shine, double kt = 0.0, double ior = 1.0) {
+    Material m;
+    m.color = color;
+    m.kd = kd;
+    m.ks = ks;
+    m.shine = shine;
+    m.kt = kt;
+    m.ior = ior;
+    return m;
+}
+
+int addMaterial(Scene& s, const Material& m) {
+    s.materials.push_back(m);
+    return int(s.materials.size()) - 1;
+}
+
+const std::array<Vec3, 5> kPalette = {Vec3(0.90, 0.30, 0.25), Vec3(0.30, 0.80, 0.35),
+                                      Vec3(0.30, 0.45, 0.90), Vec3(0.95, 0.80, 0.30),
+                                      Vec3(0.85, 0.85, 0.85)};
+
+// [cube-scene]
+/// The paper's Table 1 scene: an N x N x N lattice of jittered spheres.
+Scene makeCube(int n, std::uint64_t seed) {
+    Scene s;
+    s.name = "cube:" + std::to_string(n);
+    s.background = Vec3(0.15, 0.18, 0.24);
+    int materials[kPalette.size()];
+    for (std::size_t i = 0; i < kPalette.size(); ++i)
+        materials[i] = addMaterial(s, mat(kPalette[i], 0.6, 0.4, 30.0));
+    Random rnd(seed);
+    const double half = 0.5 * (n - 1);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                // Unit lattice, each centre jittered by up to +-0.15, radius in [0.25, 0.45]
+                Sphere sp;
+                sp.c.x = i - half + rnd.uniform(-0.15, 0.15);
+                sp.c.y = j - half + rnd.uniform(-0.15, 0.15);
+                sp.c.z = k - half + rnd.uniform(-0.15, 0.15);
+                sp.r = rnd.uniform(0.25, 0.45);
+                s.addSphere(sp, materials[rnd.index(int(kPalette.size()))]);
+            }
+    s.finalize();
+
+    // Seen from a corner, far enough that the bounding sphere just fits the view cone
+    Camera& cam = s.camera;
+    cam.angle = 40.0;
+    cam.hither = 1e-3;
+    cam.width = cam.height = 512;
+    cam.up = Vec3(0.0, 1.0, 0.0);
+    cam.at = s.bound.c;
+    const double dist = s.bound.r / std::sin(0.5 * cam.angle * kPi / 180.0);
+    cam.from = cam.at + dist * glm::normalize(Vec3(1.0, 0.8, 1.3));
+
+    // Two lights above the camera, one to each side, so that spheres cast shadows
+    const Vec3 forward = glm::normalize(cam.at - cam.from);
+    const Vec3 right = glm::normalize(glm::cross(forward, cam.up));
+    const Vec3 up = glm::cross(right, forward);
+    s.lights.push_back({cam.from + dist * (0.6 * up + 0.5 * right), Vec3(0.7)});
+    s.lights.push_back({cam.from + dist * (0.9 * up - 0.7 * right), Vec3(0.5)});
+    return s;
+}
+// [cube-scene]
+
+/// Glass spheres in front of and among opaque ones, on a ground square.
+Scene makeGlass(std::uint64_t seed) {
+    Scene s;
+    s.name = "glass";
+    s.background = Vec3(0.20, 0.25, 0.35);
+    const int ground = addMaterial(s, mat(Vec3(0.75, 0.75, 0.70), 0.9, 0.0, 0.0));
+    const int glass = addMaterial(s, mat(Vec3(1.0), 0.05, 0.15, 100.0, 0.85, 1.5));
+    const int red = addMaterial(s, mat(kPalette[0], 0.7, 0.3, 40.0));
+    const int green = addMaterial(s, mat(kPalette[1], 0.7, 0.3, 40.0));
+    const int blue = addMaterial(s, mat(kPalette[2], 0.7, 0.3, 40.0));
+    const int gold = addMaterial(s, mat(kPalette[3], 0.7, 0.3, 40.0));
+
+    // Ground: a 16 x 16 square at y = 0, normal up
+    Polygon floor;
+    if (auto err = makePolygon({Vec3(-8, 0, 8), Vec3(8, 0, 8), Vec3(8, 0, -8), Vec3(-8, 0, -8)}, {}, floor))
+        throw SceneError("glass", 0, 0, *err);
+    s.addPolygon(std::move(floor), ground);
+
+    // Spheres stand on the ground: centre height = radius
+    const auto stand = [](double x, double z, double r) { return Sphere{Vec3(x, r, z), r}; };
+    s.addSphere(stand(-1.8, -1.5, 1.0), red);
+    s.addSphere(stand(1.6, -2.0, 0.8), blue);
+    s.addSphere(stand(0.2, -3.5, 0.6), green);
+    s.addSphere(stand(-0.6, 1.2, 0.9), glass);  // in front
+    s.addSphere(stand(1.4, 0.6, 0.6), glass);   // in front
+    s.addSphere(stand(0.1, -1.0, 0.7), glass);  // among the opaque ones
+
+    // A few marbles scattered by the seed, never overlapping anything
+    Random rnd(seed);
+    const int colours[] = {red, green, blue, gold, glass};
+    int placed = 0;
+    for (int attempt = 0; attempt < 400 && placed < 10; ++attempt) {
+        const double r = rnd.uniform(0.15, 0.3);
+        const Sphere m = stand(rnd.uniform(-4.0, 4.0), rnd.uniform(-5.0, 3.0), r);
+        const int colour = colours[rnd.index(5)];
+        bool free = true;
+        for (const Sphere& o : s.spheres) free = free && glm::length(o.c - m.c) > o.r + m.r + 0.02;
+        if (!free) continue;
+        s.addSphere(m, colour);
+        ++placed;
+    }
+
+    Camera& cam = s.camera;
+    cam.from = Vec3(0.0, 2.2, 8.0);
+    cam.at = Vec3(0.0, 0.8, 0.0);
+    cam.up = Vec3(0.0, 1.0, 0.0);
+    cam.angle = 45.0;
+    cam.hither = 1e-3;
+    cam.width = cam.height = 512;
+    s.lights.push_back({Vec3(-4.0, 6.0, 5.0), Vec3(0.6)});
+    s.lights.push_back({Vec3(5.0, 8.0, 2.0), Vec3(0.6)});
+    s.finalize();
+    return s;
+}
+
+/// One diffuse sphere that fills the view; the light sits beside the eye.
+Scene makeFill() {
+    Scene s;
+    s.name = "fill";
+    s.background = Vec3(0.0);
+    s.addSphere(Sphere{Vec3(0.0), 1.0}, addMaterial(s, mat(Vec3(0.8, 0.6, 0.4), 0.9, 0.0, 0.0)));
+    // From 1.6 radii the sphere subtends asin(1/1.6) = 38.7 degrees; the corner rays of
+    // a 40 degree view are atan(sqrt(2) tan 20) = 27.2 degrees off axis
+    Camera& cam = s.camera;
+    cam.from = Vec3(0.0, 0.0, 1.6);
+    cam.at = Vec3(0.0);
+    cam.up = Vec3(0.0, 1.0, 0.0);
+    cam.angle = 40.0;
+    cam.hither = 1e-3;
+    cam.width = cam.height = 64;
+    s.lights.push_back({Vec3(0.15, 0.2, 1.75), Vec3(1.0)});
+    s.finalize();
+    return s;
+}
+
+/// The paper's Figure 2: a reflected ray from the big sphere hits the small one.
+Scene makePair() {
+    Scene s;
+    s.name = "pair";
+    s.background = Vec3(0.10, 0.10, 0.15);
+    s.addSphere(Sphere{Vec3(0.0), 1.0}, addMaterial(s, mat(Vec3(0.85, 0.85, 0.9), 0.15, 0.85, 100.0)));
+    s.addSphere(Sphere{Vec3(1.1, 0.7, 1.4), 0.35}, addMaterial(s, mat(kPalette[0], 0.8, 0.2, 20.0)));
+    Camera& cam = s.camera;
+    cam.from = Vec3(0.0, 0.3, 5.0);
+    cam.at = Vec3(0.0);
+    cam.up = Vec3(0.0, 1.0, 0.0);
+    cam.angle = 40.0;
+    cam.hither = 1e-3;
+    cam.width = cam.height = 256;
+    s.lights.push_back({Vec3(-3.0, 4.0, 5.0), Vec3(1.0)});
+    s.finalize();
+    return s;
+}
+
+bool endsWithNff(const std::string& s) {
+    if (s.size() < 4) return false;
+    const std::string tail = s.substr(s.size() - 4);
+    return tail == ".nff" || tail == ".NFF" || tail == ".Nff";
+}
+
+}  // namespace
+
+std::vector<BuiltinInfo> builtinScenes() {
+    return {
+        {"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), the paper's Table 1 scene"},
+        {"glass", "refracting glass spheres in front of and among opaque ones, on a ground square"},
+        {"fill", "one diffuse sphere filling the 64x64 view, lit from the eye: coherence 1"},
+        {"pair", "a big mirror sphere reflecting a small one, the paper's Figure 2"},
+    };
+}
+
+Scene makeBuiltin(const std::string& spec, std::uint64_t seed) {
+    if (spec == "glass") return makeGlass(seed);
+    if (spec == "fill") return makeFill();
+    if (spec == "pair") return makePair();
+    const std::string usage = "expected cube:N with N a whole number from 1 to " + std::to_string(kMaxCube);
+    if (spec == "cube" || spec == "cube:") throw SceneError(spec, 0, 0, "the cube scene needs a size: " + usage);
+    if (spec.rfind("cube:", 0) == 0) {
+        const std::string digits = spec.substr(5);
+        int n = 0;
+        const char* first = digits.data();
+        const char* last = first + digits.size();
+        const auto [ptr, ec] = std::from_chars(first, last, n);
+        if (digits[0] < '0' || digits[0] > '9' || ec != std::errc() || ptr != last || n < 1 || n > kMaxCube)
+            throw SceneError(spec, 0, 0, "bad cube size '" + digits + "': " + usage);
+        return makeCube(n, seed);
+    }
+    std::string names;
+    for (const BuiltinInfo& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;
+    throw SceneError(spec, 0, 0, "unknown scene '" + spec + "': not a file, and not a built-in scene (" +
+                                     names + ")");
+}
+
+Scene loadScene(const std::string& spec, std::uint64_t seed) {
+    std::error_code ec;
+    const bool isFile = std::filesystem::exists(spec, ec) && !std::filesystem::is_directory(spec, ec);
+    if (isFile || endsWithNff(spec)) return readNffFile(spec);
+    return makeBuiltin(spec, seed);
+}
+
+}  // namespace rc

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// \brief Built-in scene generators (`cube:N`, `glass`, `fill`, `pair`) and loadScene().
+///
+/// The generators are deterministic across machines and compilers: random numbers come
+/// from std::mt19937_64 and are turned into doubles by hand, never through the
+/// implementation-defined std::uniform_real_distribution.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace rc {
+
+/// A built-in scene's name as the command line takes it (e.g. "cube:N") and one line
+/// that describes it.
+struct BuiltinInfo {
+    std::string name;
+    std::string description;
+};
+
+/// Every built-in scene, in the order `raycache scenes` lists them.
+std::vector<BuiltinInfo> builtinScenes();
+
+/// Builds the built-in scene named by `spec`:
+/// - `cube:N` (1 <= N <= 64): the paper's Table 1 scene, N^3 jittered reflective spheres
+///   on a lattice, seen from a corner so that the cube fills the view; 512x512.
+/// - `glass`: refracting spheres in front of and among opaque ones on a ground square,
+///   with a few seed-placed marbles; 512x512.
+/// - `fill`: one diffuse sphere that every eye ray hits, lit from next to the eye, so
+///   that the coherence is 1; 64x64. Does not depend on `seed`.
+/// - `pair`: a big mirror sphere and a small sphere whose reflection it shows (the
+///   paper's Figure 2); 256x256. Does not depend on `seed`.
+/// Scene::name is the canonical spec ("cube:8", "glass", ...).
+/// \throws SceneError(spec, 0, 0, message) for an unknown name or a bad N.
+Scene makeBuiltin(const std::string& spec, std::uint64_t seed = 1986);
+
+/// An existing file, or a spec ending in ".nff", is read with readNffFile(); anything
+/// else goes to makeBuiltin().
+/// \throws SceneError
+Scene loadScene(const std::string& spec, std::uint64_t seed = 1986);
+
+}  // namespace rc

@@ -1,0 +1,30 @@
+#include "scene/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace rc {
+
+RayGenerator::RayGenerator(const Camera& cam, int width, int height)
+    : from_(cam.from), width_(width), height_(height) {
+    forward_ = glm::normalize(cam.at - cam.from);
+    right_ = glm::normalize(glm::cross(forward_, cam.up));
+    up_ = glm::cross(right_, forward_);
+    const double half = std::tan(cam.angle * 3.14159265358979323846 / 360.0);
+    const double m = double(std::max(width, height));
+    sx_ = half * width / m;
+    sy_ = half * height / m;
+}
+
+Ray RayGenerator::primary(double x, double y) const {
+    // [primary-ray]
+    // Pixel corners: column 0 at the left edge of the view, column W-1 at the right
+    const double u = width_ > 1 ? 2.0 * x / (width_ - 1) - 1.0 : 0.0;
+    const double v = height_ > 1 ? 1.0 - 2.0 * y / (height_ - 1) : 0.0;
+    return {from_, glm::normalize(forward_ + u * sx_ * right_ + v * sy_ * up_)};
+    // [primary-ray]
+}
+
+}  // namespace rc

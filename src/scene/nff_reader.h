@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// \brief Reader for Eric Haines' Neutral File Format (NFF), as the SPD scenes use it.
+///
+/// The reader works on tokens, not lines: a `v` block or a polygon may be spread over
+/// several lines, and several keywords may share one line. A `#` that starts a token
+/// starts a comment that runs to the end of the line.
+///
+/// Supported keywords:
+/// - `v` then `from x y z`, `at x y z`, `up x y z`, `angle a` (full field of view in
+///   degrees), `hither h`, `resolution w h`, in any order (`hither` may be left out);
+/// - `b r g b` (background; may come before `v`);
+/// - `l x y z [r g b]` (point light; the colour is optional);
+/// - `f r g b Kd Ks Shine T ior` (the material of every primitive that follows);
+/// - `s x y z r` (sphere);
+/// - `p N` then N vertices, `pp N` then N (vertex, normal) pairs (convex polygons).
+///
+/// A primitive that comes before any `f` gets a white diffuse material. Everything
+/// else (`c`, `tpp`, ...) is rejected. Every error is an rc::SceneError whose what()
+/// is `file:line:column: message`; lines and columns count from 1, columns in bytes.
+/// An error "at end of file" points just past the file's last token (1:1 in an empty
+/// file). No input can make the reader crash, hang or allocate more than a small
+/// multiple of the input's size.
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "scene/scene.h"
+
+namespace rc {
+
+/// The reader's hard limits: anything beyond them is rejected as an error, before
+/// any memory is allocated for it.
+struct NffLimits {
+    /// Most primitives (spheres plus polygons) in one scene.
+    static constexpr long maxPrimitives = 10'000'000;
+    /// Most vertices in one `p` or `pp` polygon.
+    static constexpr long maxPolygonVertices = 10'000;
+    /// Largest image width or height in `resolution`.
+    static constexpr long maxResolution = 16384;
+    /// Largest magnitude of any number (so that squares of coordinates stay finite).
+    static constexpr double maxMagnitude = 1e100;
+    /// Largest input, in bytes (1 GiB).
+    static constexpr std::size_t maxFileBytes = std::size_t(1) << 30;
+};
+
+/// Parses NFF `text`; `fileName` names it in errors and gives Scene::name its stem.
+/// `maxPrimitives` exists so that tests can exercise the limit cheaply.
+/// \throws SceneError on anything malformed or unsupported.
+Scene parseNff(std::string_view text, const std::string& fileName,
+               long maxPrimitives = NffLimits::maxPrimitives);
+
+/// Reads and parses the NFF file at `path`.
+/// \throws SceneError; a file that cannot be read is reported at line 0, column 0.
+Scene readNffFile(const std::string& path);
+
+}  // namespace rc

@@ -1,0 +1,64 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/intersection.h"
+
+namespace rc {
+
+int Scene::addSphere(const Sphere& s, int mat) {
+    spheres.push_back(s);
+    objects.push_back({Shape::Sphere, int(spheres.size()) - 1, mat, s});
+    return int(objects.size()) - 1;
+}
+
+int Scene::addPolygon(Polygon p, int mat) {
+    const Sphere b = boundingSphere(p);
+    polygons.push_back(std::move(p));
+    objects.push_back({Shape::Polygon, int(polygons.size()) - 1, mat, b});
+    return int(objects.size()) - 1;
+}
+
+void Scene::finalize() {
+    if (objects.empty()) {
+        bound = {Vec3(0.0), 0.0};
+        return;
+    }
+    Vec3 lo = objects.front().bound.c, hi = lo;
+    for (const Object& o : objects) {
+        lo = glm::min(lo, o.bound.c - Vec3(o.bound.r));
+        hi = glm::max(hi, o.bound.c + Vec3(o.bound.r));
+    }
+    bound.c = 0.5 * (lo + hi);
+    bound.r = 0.0;
+    for (const Object& o : objects) bound.r = std::max(bound.r, glm::length(o.bound.c - bound.c) + o.bound.r);
+    bound.r *= 1.0 + 1e-9;
+}
+
+double Scene::intersect(const Ray& ray, int id, const RayOrigin& origin) const {
+    const Object& o = objects[id];
+    const bool self = origin.object == id;
+    if (o.shape == Shape::Polygon) return intersectPolygon(ray, polygons[o.index], self);
+    const Start start = !self ? Start::Elsewhere : origin.inside ? Start::Entering : Start::Leaving;
+    return intersectSphere(ray, spheres[o.index], start);
+}
+
+Vec3 Scene::normal(int id, const Vec3& p) const {
+    const Object& o = objects[id];
+    if (o.shape == Shape::Polygon) return polygonNormal(polygons[o.index], p);
+    const Sphere& s = spheres[o.index];
+    return (p - s.c) / s.r;
+}
+
+bool Scene::hasTransparency() const {
+    return std::any_of(objects.begin(), objects.end(),
+                       [&](const Object& o) { return materials[o.material].kt > 0.0; });
+}
+
+SceneError::SceneError(std::string f, int l, int c, std::string m)
+    : std::runtime_error(f + ":" + std::to_string(l) + ":" + std::to_string(c) + ": " + m),
+      file(std::move(f)), line(l), column(c), message(std::move(m)) {}
+
+}  // namespace rc

@@ -1,0 +1,75 @@
+#pragma once
+/// \file
+/// \brief The immutable scene: spheres, polygons, materials, lights, camera.
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geometry/polygon.h"
+#include "geometry/sphere.h"
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/material.h"
+
+namespace rc {
+
+/// What kind of surface an object is.
+enum class Shape : std::uint8_t { Sphere, Polygon };
+
+/// One primitive of the scene. Polygons take part in caching through `bound`, their
+/// bounding sphere; for spheres `bound` is the sphere itself.
+struct Object {
+    Shape shape = Shape::Sphere;
+    int index = 0;     ///< into Scene::spheres or Scene::polygons
+    int material = 0;  ///< into Scene::materials
+    Sphere bound;
+};
+
+/// Where a ray starts: on no object (the eye), or on an object's surface, heading
+/// out of it or into it.
+struct RayOrigin {
+    int object = -1;      ///< -1: a point that is on no surface (the eye)
+    bool inside = false;  ///< heading into the object's interior (refraction)
+    bool operator==(const RayOrigin&) const = default;
+};
+
+/// A scene, immutable once built. Object ids index `objects`.
+struct Scene {
+    std::string name;
+    Camera camera;
+    Vec3 background{0.0};
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    std::vector<Sphere> spheres;
+    std::vector<Polygon> polygons;
+    std::vector<Object> objects;
+    Sphere bound;  ///< holds every object; set by finalize()
+
+    /// Adds a sphere with a material index; returns its object id.
+    int addSphere(const Sphere& s, int material);
+    /// Adds a polygon (made with makePolygon) with a material; returns its object id.
+    int addPolygon(Polygon p, int material);
+    /// Computes `bound`. Call once after the last add.
+    void finalize();
+
+    /// Hit distance of `ray` with object `id`, or kNoHit, for a ray starting at `origin`.
+    double intersect(const Ray& ray, int id, const RayOrigin& origin) const;
+    /// Outward unit normal of object `id` at surface point `p`.
+    Vec3 normal(int id, const Vec3& p) const;
+    const Material& material(int id) const { return materials[objects[id].material]; }
+    int size() const { return int(objects.size()); }
+    bool hasTransparency() const;
+};
+
+/// A scene that could not be read: `file:line:column: message`.
+class SceneError : public std::runtime_error {
+public:
+    SceneError(std::string file, int line, int column, std::string message);
+    std::string file;
+    int line = 0;
+    int column = 0;
+    std::string message;
+};
+
+}  // namespace rc

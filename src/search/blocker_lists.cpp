@@ -1,0 +1,50 @@
+#include "search/blocker_lists.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/cone.h"
+
+namespace rc {
+
+BlockerLists::BlockerLists(const Scene& scene)
+    : scene_(scene), sites_(scene.size() + 1 + int(scene.lights.size())) {
+    // Rounding only ever adds spheres to a list: widen the hull by a few ulps of the scene
+    double scale = glm::length(scene.bound.c) + scene.bound.r + glm::length(scene.camera.from);
+    for (const Light& l : scene.lights) scale = std::max(scale, glm::length(l.position));
+    slack_ = 1e-9 * scale;
+}
+
+Sphere BlockerLists::siteSphere(int site) const {
+    if (site < scene_.size()) return scene_.objects[site].bound;
+    if (site == eyeSite()) return {scene_.camera.from, 0.0};
+    return {scene_.lights[site - scene_.size() - 1].position, 0.0};
+}
+
+const std::vector<int>* BlockerLists::find(int origin, int target) const {
+    auto it = lists_.find(key(origin, target));
+    return it == lists_.end() ? nullptr : &it->second;
+}
+
+const std::vector<int>& BlockerLists::get(int origin, int target, Counters& n) {
+    auto [it, fresh] = lists_.try_emplace(key(origin, target));
+    if (!fresh) return it->second;
+    // [build-blocker-list]
+    // Every object whose bounding sphere meets the hull of origin and target may block
+    const Sphere a = siteSphere(origin);
+    const Sphere b = siteSphere(target);
+    std::vector<int>& list = it->second;
+    for (int id = 0; id < scene_.size(); ++id) {
+        if (id == target) continue;
+        ++n.hullTests;
+        if (meetsHull(scene_.objects[id].bound, a, b, slack_)) list.push_back(id);
+    }
+    // [build-blocker-list]
+    ++n.blockerListsBuilt;
+    n.blockerListEntries += list.size();
+    n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.size());
+    return list;
+}
+
+}  // namespace rc

@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// \brief Hanrahan's lists of potential blocking spheres, built lazily per pair.
+///
+/// Any segment from a point of the origin (the eye, a light, or an object's bounding
+/// sphere) to a point of the target lies in the convex hull of the two, so only objects
+/// whose bounding spheres meet that hull can block it. A list is built the first time a
+/// pair is met and kept: no O(n^3) precomputation.
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "analysis/statistics.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+/// Lists of potential blockers keyed by (origin site, target site). A site is an object
+/// id, the eye (`eyeSite()`), or a light (`lightSite(k)`), each a sphere: a point is a
+/// sphere of radius 0.
+class BlockerLists {
+public:
+    explicit BlockerLists(const Scene& scene);
+
+    int eyeSite() const { return scene_.size(); }
+    int lightSite(int k) const { return scene_.size() + 1 + k; }
+    /// The site a ray starting at `origin` leaves from.
+    int originSite(const RayOrigin& origin) const {
+        return origin.object >= 0 ? origin.object : eyeSite();
+    }
+    /// The sphere standing for a site.
+    Sphere siteSphere(int site) const;
+
+    /// Every object whose bounding sphere meets the hull of the two sites, the target
+    /// excepted; built on first use and counted in `n`.
+    const std::vector<int>& get(int origin, int target, Counters& n);
+    /// The list if it was built, else nullptr.
+    const std::vector<int>* find(int origin, int target) const;
+    std::size_t size() const { return lists_.size(); }
+
+private:
+    std::uint64_t key(int origin, int target) const {
+        return std::uint64_t(origin) * std::uint64_t(sites_) + std::uint64_t(target);
+    }
+    const Scene& scene_;
+    int sites_;
+    double slack_;
+    std::unordered_map<std::uint64_t, std::vector<int>> lists_;
+};
+
+}  // namespace rc

@@ -1,0 +1,105 @@
+#include "search/cache_strategy.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "search/blocker_cache.h"
+#include "search/cylinder_cache.h"
+#include "search/no_cache.h"
+
+namespace rc {
+
+std::string_view toString(CacheKind k) {
+    switch (k) {
+        case CacheKind::None: return "none";
+        case CacheKind::Cylinder: return "cylinder";
+        case CacheKind::Blocker: return "blocker";
+    }
+    return "?";
+}
+
+std::optional<CacheKind> parseCacheKind(std::string_view s) {
+    for (CacheKind k : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker})
+        if (toString(k) == s) return k;
+    return std::nullopt;
+}
+
+CacheStrategy::CacheStrategy(const Scene& scene, const CompleteSearch& search)
+    : scene_(scene), search_(search) {
+    double scale = glm::length(scene.bound.c) + scene.bound.r + glm::length(scene.camera.from);
+    for (const Light& l : scene.lights) scale = std::max(scale, glm::length(l.position));
+    slack_ = 1e-9 * scale;
+}
+
+Lookup CacheStrategy::searchAndReload(const Query& q, CacheEntry& e, MissReason why, Counters& n) {
+    // [search-and-reload]
+    // A miss: search the whole scene, then load the cache with what was found
+    ++n.completeSearches;
+    const Answer a = search_.nearest(q, n);
+    reload(q, a, e, n);
+    return {true, a, Decision::Miss, why, true};
+    // [search-and-reload]
+}
+
+MissReason CacheStrategy::unusable(const Query& q, const CacheEntry& e) {
+    if (e.state == CacheEntry::State::Empty) return MissReason::Cold;
+    if (e.state == CacheEntry::State::Flushed) return MissReason::Flushed;
+    if (!(e.origin == q.origin)) return MissReason::OriginChanged;
+    return MissReason::None;
+}
+
+Vec3 CacheStrategy::segmentEnd(const Query& q, const Answer& a) const {
+    if (a.object >= 0) return q.ray.at(a.t);
+    if (q.tmax < kNoHit) return q.ray.at(q.tmax);
+    // Nothing lies outside the scene's bounding sphere: the segment ends where the ray leaves it
+    const SphereRoots r = sphereRootsStable(q.ray, scene_.bound);
+    return q.ray.at(r.hit ? std::max(0.0, r.t1) : 0.0);
+}
+
+void CacheStrategy::buildCylinder(const Query& q, const Answer& a, CacheEntry& e, Counters& n) const {
+    // [build-cylinder]
+    // The radius is the distance from the segment to the nearest other surface
+    const Vec3 from = q.ray.o;
+    const Vec3 to = segmentEnd(q, a);
+    double radius = kNoHit;
+    for (int id = 0; id < scene_.size(); ++id) {
+        if (id == a.object) continue;
+        if (id == q.origin.object && !q.origin.inside) continue;  // cannot be met again
+        const Sphere& s = scene_.objects[id].bound;
+        radius = std::min(radius, segmentDistance(s.c, from, to) - s.r);
+    }
+    e.cylinder = {from, to, radius - slack_};
+    // [build-cylinder]
+    ++n.cylindersBuilt;
+}
+
+Lookup CacheStrategy::probeCylinder(const Query& q, const CacheEntry& e, Counters& n) const {
+    // [probe-cylinder]
+    Answer a;
+    if (e.object >= 0) {
+        // Test the cached object first
+        ++n.intersectionTests;
+        const double t = scene_.intersect(q.ray, e.object, q.origin);
+        if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
+        a = {e.object, t};
+    }
+    // Then the new segment must stay inside the cylinder of safety
+    ++n.cylinderTests;
+    if (!e.cylinder.contains(q.ray.o, segmentEnd(q, a)))
+        return {false, {}, Decision::Miss, MissReason::LeftCylinder};
+    return {true, a, Decision::Hit, MissReason::None};
+    // [probe-cylinder]
+}
+
+std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
+                                            const CompleteSearch& search) {
+    switch (kind) {
+        case CacheKind::None: return std::make_unique<NoCache>(scene, search);
+        case CacheKind::Cylinder: return std::make_unique<CylinderCache>(scene, search);
+        case CacheKind::Blocker: return std::make_unique<BlockerCache>(scene, search);
+    }
+    return nullptr;
+}
+
+}  // namespace rc

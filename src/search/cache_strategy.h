@@ -1,0 +1,73 @@
+#pragma once
+/// \file
+/// \brief The three interchangeable answers to "what does this ray hit first?": no cache,
+/// the Speer-DeRose-Barsky cylinder of safety, and Hanrahan's blocker lists.
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "search/blocker_lists.h"
+#include "search/cache_tree.h"
+#include "search/complete_search.h"
+
+namespace rc {
+
+/// Which cache answers ray queries.
+enum class CacheKind { None, Cylinder, Blocker };
+std::string_view toString(CacheKind k);
+std::optional<CacheKind> parseCacheKind(std::string_view s);
+
+/// How far a lookup may go.
+enum class LookupMode {
+    Full,       ///< answer every query; on a miss, search and reload the entry
+    CheapOnly,  ///< answer from the cache or give up: never search, never reload
+};
+
+/// The outcome of one lookup.
+struct Lookup {
+    bool known = false;  ///< false: CheapOnly gave up (the ray is deferred)
+    Answer answer;
+    Decision decision = Decision::Uncached;
+    MissReason reason = MissReason::None;
+    bool searched = false;  ///< a complete search was made
+};
+
+/// A cache strategy: looks up a query in its cache entry, falling back on the complete
+/// search. Every answer it gives equals the complete search's, object and distance.
+class CacheStrategy {
+public:
+    CacheStrategy(const Scene& scene, const CompleteSearch& search);
+    virtual ~CacheStrategy() = default;
+    virtual CacheKind kind() const = 0;
+    /// Answers `q` using (and, in Full mode, updating) the cache entry of its path.
+    virtual Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) = 0;
+    /// Can a cheap lookup fail? (Not without a cache: every lookup searches.)
+    virtual bool caches() const { return true; }
+    /// The blocker lists, for strategies that have them.
+    virtual const BlockerLists* blockerLists() const { return nullptr; }
+
+protected:
+    /// A complete search, counted, and the entry reloaded with its answer.
+    Lookup searchAndReload(const Query& q, CacheEntry& e, MissReason why, Counters& n);
+    virtual void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) = 0;
+    /// Why an entry cannot answer this query at all, or None when it may.
+    static MissReason unusable(const Query& q, const CacheEntry& e);
+    /// The end of the segment a query covers: its hit, its light, or where it leaves
+    /// the scene's bounding sphere.
+    Vec3 segmentEnd(const Query& q, const Answer& a) const;
+    /// Builds the cylinder of safety around the segment of `q` ending at `a`.
+    void buildCylinder(const Query& q, const Answer& a, CacheEntry& e, Counters& n) const;
+    /// Tests the cached object and the cylinder of safety.
+    Lookup probeCylinder(const Query& q, const CacheEntry& e, Counters& n) const;
+
+    const Scene& scene_;
+    const CompleteSearch& search_;
+    double slack_;  ///< a few ulps of the scene's size: shrinks cylinders and cones
+};
+
+/// Makes the strategy of a kind.
+std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
+                                            const CompleteSearch& search);
+
+}  // namespace rc

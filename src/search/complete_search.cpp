@@ -1,0 +1,14 @@
+#include "search/complete_search.h"
+
+namespace rc {
+
+Answer LinearSearch::nearest(const Query& q, Counters& n) const {
+    // [linear-search]
+    // Test every object; keep the nearest hit in front of tmax
+    Answer best;
+    for (int id = 0; id < scene_.size(); ++id) testObject(scene_, q, id, best, n);
+    return best;
+    // [linear-search]
+}
+
+}  // namespace rc

@@ -1,0 +1,55 @@
+#pragma once
+/// \file
+/// \brief Per-pixel sums in fixed point, so the order of additions cannot change a bit.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/ray.h"
+
+namespace rc {
+
+/// Accumulates ray contributions per pixel. Integer addition is associative, so any
+/// visiting order (scanline, breadth-first, progressive, threads) sums to the same
+/// image, bit for bit; 2^-32 is far below an 8-bit step.
+class ImageAccumulator {
+public:
+    static constexpr double kScale = 4294967296.0;  // 2^32
+
+    ImageAccumulator(int width = 0, int height = 0)
+        : width_(width), height_(height), sum_(std::size_t(width) * height * 3, 0) {}
+
+    void add(int pixel, const Vec3& c) {
+        for (int k = 0; k < 3; ++k)
+            sum_[std::size_t(pixel) * 3 + k] += std::int64_t(std::llround(c[k] * kScale));
+    }
+    Vec3 value(int pixel) const {
+        const std::int64_t* p = &sum_[std::size_t(pixel) * 3];
+        return Vec3(double(p[0]), double(p[1]), double(p[2])) / kScale;
+    }
+    /// The 8-bit RGB image, clamped to [0, 1].
+    std::vector<std::uint8_t> rgb8() const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    int width_, height_;
+    std::vector<std::int64_t> sum_;
+};
+
+/// 8-bit value of one channel.
+inline std::uint8_t toByte(double v) {
+    const double c = v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
+    return std::uint8_t(std::floor(c * 255.0 + 0.5));
+}
+
+inline std::vector<std::uint8_t> ImageAccumulator::rgb8() const {
+    std::vector<std::uint8_t> out(std::size_t(width_) * height_ * 3);
+    for (int p = 0; p < width_ * height_; ++p) {
+        const Vec3 v = value(p);
+        for (int k = 0; k < 3; ++k) out[std::size_t(p) * 3 + k] = toByte(v[k]);
+    }
+    return out;
+}
+
+}  // namespace rc
