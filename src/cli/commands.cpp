@@ -19,7 +19,16 @@ namespace {
 const std::vector<std::string> kCaches{"none", "cylinder", "blocker"};
 const std::vector<std::string> kOrders{"scanline", "progressive", "bfs"};
 
-void addRenderFlags(CLI::App* c, RenderFlags& f) {
+}  // namespace
+
+void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
+    RenderFlags& f = *this;
+    if (cacheAndOrder) {
+        c->add_option("--cache", f.cache, "none | cylinder | blocker")
+            ->check(CLI::IsMember(kCaches))->capture_default_str();
+        c->add_option("--order", f.order, "scanline | progressive | bfs")
+            ->check(CLI::IsMember(kOrders))->capture_default_str();
+    }
     c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
     c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, 16384));
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
@@ -30,7 +39,6 @@ void addRenderFlags(CLI::App* c, RenderFlags& f) {
         ->check(CLI::Range(0, 16384))->capture_default_str();
     c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter")->capture_default_str();
 }
-}  // namespace
 
 RenderOptions RenderFlags::options() const {
     RenderOptions o;
@@ -45,44 +53,27 @@ RenderOptions RenderFlags::options() const {
     return o;
 }
 
-void Commands::addTo(CLI::App& app) {
-    renderCmd_ = app.add_subcommand("render", "render a scene to PNG and report what it took");
-    renderCmd_->add_option("scene", scene_, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
+void addRenderCommand(CLI::App& app, Commands& out) {
+    struct State {
+        std::string scene, out, stats;
+        bool quiet = false;
+        RenderFlags flags;
+    };
+    auto st = std::make_shared<State>();
+    CLI::App* c = app.add_subcommand("render", "render a scene to PNG and report what it took");
+    c->add_option("scene", st->scene, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
         ->required();
-    renderCmd_->add_option("-o,--output", out_, "PNG file to write");
-    renderCmd_->add_option("--stats", stats_, "statistics JSON file to write");
-    renderCmd_->add_option("--cache", flags_.cache, "none | cylinder | blocker")
-        ->check(CLI::IsMember(kCaches))->capture_default_str();
-    renderCmd_->add_option("--order", flags_.order, "scanline | progressive | bfs")
-        ->check(CLI::IsMember(kOrders))->capture_default_str();
-    renderCmd_->add_flag("--verify", flags_.verify, "run the complete search beside every cached answer");
-    renderCmd_->add_flag("-q,--quiet", quiet_, "no progress line or summary");
-    addRenderFlags(renderCmd_, flags_);
-
-    infoCmd_ = app.add_subcommand("info", "what a scene holds and which rays it can produce");
-    infoCmd_->add_option("scene", scene_, "an .nff file or a built-in")->required();
-    infoCmd_->add_option("--seed", flags_.seed, "seed of the built-in scenes' jitter");
-
-    scenesCmd_ = app.add_subcommand("scenes", "list the built-in scenes");
-
-    table1Cmd_ = app.add_subcommand("table1", "reproduce the paper's Table 1 on cube:N");
-    table1Cmd_->add_option("--sizes", sizes_, "values of N, e.g. 3,4,5")->delimiter(',')
-        ->check(CLI::Range(1, 64))->capture_default_str();
-    table1Cmd_->add_option("--repeat", repeat_, "repeats; times are medians")->check(CLI::Range(1, 100))
-        ->capture_default_str();
-    table1Cmd_->add_option("--csv", csv_, "also write the table as CSV");
-    addRenderFlags(table1Cmd_, flags_);
-}
-
-int Commands::run() {
-    if (*renderCmd_) return render();
-    if (*infoCmd_) return info();
-    if (*scenesCmd_) return scenes();
-    if (*table1Cmd_) return table1();
-    return 2;
-}
-
-int Commands::render() {
+    c->add_option("-o,--output", st->out, "PNG file to write");
+    c->add_option("--stats", st->stats, "statistics JSON file to write");
+    c->add_flag("--verify", st->flags.verify, "run the complete search beside every cached answer");
+    c->add_flag("-q,--quiet", st->quiet, "no progress line or summary");
+    st->flags.addTo(c, true);
+    out.push_back({c, [st] {
+        const std::string& scene_ = st->scene;
+        const std::string& out_ = st->out;
+        const std::string& stats_ = st->stats;
+        const bool quiet_ = st->quiet;
+        const RenderFlags& flags_ = st->flags;
     auto scene = std::make_shared<const Scene>(loadScene(scene_, flags_.seed));
     RenderSession session(scene, flags_.options());
     BeamTreeBuilder beams(session.width(), session.height());
@@ -118,10 +109,17 @@ int Commands::render() {
                     flags_.verify ? (", " + std::to_string(n.verifyDisagreements) + " disagreements").c_str() : "");
     }
     return flags_.verify && n.verifyDisagreements > 0 ? 1 : 0;
+    }});
 }
 
-int Commands::info() {
-    const Scene s = loadScene(scene_, flags_.seed);
+void addInfoCommand(CLI::App& app, Commands& out) {
+    auto scene = std::make_shared<std::string>();
+    auto seed = std::make_shared<std::uint64_t>(1986);
+    CLI::App* c = app.add_subcommand("info", "what a scene holds and which rays it can produce");
+    c->add_option("scene", *scene, "an .nff file or a built-in")->required();
+    c->add_option("--seed", *seed, "seed of the built-in scenes' jitter");
+    out.push_back({c, [scene, seed] {
+    const Scene s = loadScene(*scene, *seed);
     int transparent = 0, reflective = 0;
     for (const Object& o : s.objects) {
         transparent += s.materials[o.material].kt > 0.0;
@@ -138,11 +136,16 @@ int Commands::info() {
                 reflective ? ", reflection" : "", transparent ? ", refraction" : "");
     std::printf("objects    %d reflective, %d transparent\n", reflective, transparent);
     return 0;
+    }});
 }
 
-int Commands::scenes() {
-    for (const BuiltinInfo& b : builtinScenes()) std::printf("%-10s %s\n", b.name.c_str(), b.description.c_str());
-    return 0;
+void addScenesCommand(CLI::App& app, Commands& out) {
+    CLI::App* c = app.add_subcommand("scenes", "list the built-in scenes");
+    out.push_back({c, [] {
+        for (const BuiltinInfo& b : builtinScenes())
+            std::printf("%-10s %s\n", b.name.c_str(), b.description.c_str());
+        return 0;
+    }});
 }
 
 }  // namespace rc::cli

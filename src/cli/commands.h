@@ -1,6 +1,8 @@
 #pragma once
-// The subcommands of `raycache` and the options they take.
+// The subcommands of `raycache`. Each lives in a file of its own and registers itself
+// with an add...Command function that main() calls.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,13 @@
 
 namespace rc::cli {
 
+/// A registered subcommand and what runs when it is chosen (returns the exit code).
+struct Command {
+    CLI::App* app = nullptr;
+    std::function<int()> run;
+};
+using Commands = std::vector<Command>;
+
 /// Options shared by every subcommand that renders.
 struct RenderFlags {
     int width = 0, height = 0, depth = 5, band = 16;
@@ -17,34 +26,15 @@ struct RenderFlags {
     std::string cache = "none", order = "scanline";
     std::uint64_t seed = 1986;
     bool verify = false;
+    /// Adds --width --height --depth --cutoff --band --seed; with `cacheAndOrder` also
+    /// --cache and --order.
+    void addTo(CLI::App* c, bool cacheAndOrder);
     RenderOptions options() const;
 };
 
-/// Registers the subcommands and runs the one that was chosen.
-class Commands {
-public:
-    void addTo(CLI::App& app);
-    int run();
-
-private:
-    int render();
-    int info();
-    int scenes();
-    int table1();
-
-    CLI::App* renderCmd_ = nullptr;
-    CLI::App* infoCmd_ = nullptr;
-    CLI::App* scenesCmd_ = nullptr;
-    CLI::App* table1Cmd_ = nullptr;
-
-    std::string scene_;
-    std::string out_, stats_;
-    bool quiet_ = false;
-    RenderFlags flags_;
-
-    std::vector<int> sizes_{3, 4, 5};
-    int repeat_ = 3;
-    std::string csv_;
-};
+void addRenderCommand(CLI::App& app, Commands& out);
+void addInfoCommand(CLI::App& app, Commands& out);
+void addScenesCommand(CLI::App& app, Commands& out);
+void addTable1Command(CLI::App& app, Commands& out);
 
 }  // namespace rc::cli

@@ -1,10 +1,6 @@
 // raycache: the command-line tool. Renders scenes with any cache and order, reports what
 // each did, and reproduces the paper's Table 1.
-#include <chrono>
-#include <cstdio>
 #include <iostream>
-#include <memory>
-#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -15,7 +11,10 @@ int main(int argc, char** argv) {
     CLI::App app{"RayCache: caching and breadth-first search to speed up ray tracing (Hanrahan 1986)"};
     app.require_subcommand(1);
     rc::cli::Commands commands;
-    commands.addTo(app);
+    rc::cli::addRenderCommand(app, commands);
+    rc::cli::addInfoCommand(app, commands);
+    rc::cli::addScenesCommand(app, commands);
+    rc::cli::addTable1Command(app, commands);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -24,10 +23,12 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
-        return 2;
+        return 2;  // every bad flag or value: exit code 2
     }
     try {
-        return commands.run();
+        for (const rc::cli::Command& c : commands)
+            if (*c.app) return c.run();
+        return 2;
     } catch (const rc::SceneError& e) {
         std::cerr << "raycache: " << e.what() << "\n";
         return 2;

@@ -30,8 +30,19 @@ double median(std::vector<double> v) {
 }
 }  // namespace
 
-int Commands::table1() {
-    RenderFlags flags = flags_;
+namespace {
+struct Table1Args {
+    std::vector<int> sizes{3, 4, 5};
+    int repeat = 3;
+    std::string csv;
+    RenderFlags flags;
+};
+
+int table1(const Table1Args& a) {
+    const std::vector<int>& sizes_ = a.sizes;
+    const int repeat_ = a.repeat;
+    const std::string& csv_ = a.csv;
+    RenderFlags flags = a.flags;
     if (flags.width == 0) flags.width = 256;
     if (flags.height == 0) flags.height = flags.width;
     std::ostringstream csv;
@@ -85,6 +96,20 @@ int Commands::table1() {
     }
     if (!csv_.empty()) writeTextFile(csv_, csv.str());
     return 0;
+}
+
+}  // namespace
+
+void addTable1Command(CLI::App& app, Commands& out) {
+    auto a = std::make_shared<Table1Args>();
+    CLI::App* c = app.add_subcommand("table1", "reproduce the paper's Table 1 on cube:N");
+    c->add_option("--sizes", a->sizes, "values of N, e.g. 3,4,5")->delimiter(',')
+        ->check(CLI::Range(1, 64))->capture_default_str();
+    c->add_option("--repeat", a->repeat, "repeats; times are medians")->check(CLI::Range(1, 100))
+        ->capture_default_str();
+    c->add_option("--csv", a->csv, "also write the table as CSV");
+    a->flags.addTo(c, false);
+    out.push_back({c, [a] { return table1(*a); }});
 }
 
 }  // namespace rc::cli
