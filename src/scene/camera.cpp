@@ -27,4 +27,14 @@ Ray RayGenerator::primary(double x, double y) const {
     // [primary-ray]
 }
 
+std::optional<glm::dvec2> RayGenerator::project(const Vec3& p) const {
+    const Vec3 w = p - from_;
+    const double z = glm::dot(w, forward_);
+    if (!(z > 0.0)) return std::nullopt;
+    const double u = glm::dot(w, right_) / (z * sx_);
+    const double v = glm::dot(w, up_) / (z * sy_);
+    return glm::dvec2(width_ > 1 ? (u + 1.0) * 0.5 * (width_ - 1) : 0.0,
+                      height_ > 1 ? (1.0 - v) * 0.5 * (height_ - 1) : 0.0);
+}
+
 }  // namespace rc

@@ -1,6 +1,10 @@
 #pragma once
 /// \file
 /// \brief The NFF view (`v` block) and how it turns pixels into eye rays.
+#include <optional>
+
+#include <glm/vec2.hpp>
+
 #include "geometry/ray.h"
 
 namespace rc {
@@ -25,6 +29,9 @@ public:
     RayGenerator(const Camera& cam, int width, int height);
     /// The eye ray through (fractional) pixel position `x`, `y`.
     Ray primary(double x, double y) const;
+    /// The inverse of primary(): the fractional pixel position `(x, y)` whose eye ray
+    /// passes through world point `p`, or nothing when `p` is not in front of the eye.
+    std::optional<glm::dvec2> project(const Vec3& p) const;
 
 private:
     Vec3 from_, forward_, right_, up_;

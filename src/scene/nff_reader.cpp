@@ -27,6 +27,15 @@ struct Token {
     bool end() const { return text.empty(); }
 };
 
+/// Concatenates strings by appending: GCC 12 warns falsely (-Wrestrict, PR105651)
+/// about chains of `"literal" + std::string` at -O3.
+template <class... Parts>
+std::string cat(const Parts&... parts) {
+    std::string s;
+    (s.append(std::string_view(parts)), ...);
+    return s;
+}
+
 /// A token, or "end of file", quoted for a message; long tokens are shortened.
 std::string describe(const Token& t) {
     if (t.end()) return "end of file";
@@ -110,7 +119,7 @@ private:
         char hex[8];
         std::snprintf(hex, sizeof hex, "0x%02x", unsigned(c));
         throw SceneError(*file_, line_, col_,
-                         std::string("non-printable byte ") + hex + " (is this a binary file?)");
+                         cat("non-printable byte ", hex, " (is this a binary file?)"));
     }
 
     std::string_view text_;
@@ -146,7 +155,10 @@ struct What {
 
     std::string str() const {
         std::string s = item;
-        if (index >= 0) s += " " + std::to_string(index + 1);
+        if (index >= 0) {
+            s += " ";
+            s += std::to_string(index + 1);
+        }
         if (part) {
             s += " ";
             s += part;
@@ -193,7 +205,7 @@ public:
             else if (k == "p") polygon(t, false);
             else if (k == "pp") polygon(t, true);
             else if (viewKeyword(k) >= 0)
-                fail(t, "'" + std::string(k) + "' outside a view ('v') block");
+                fail(t, "'", k, "' outside a view ('v') block");
             else unsupported(t);
         }
         scene_.finalize();
@@ -201,8 +213,10 @@ public:
     }
 
 private:
-    [[noreturn]] void fail(const Token& t, const std::string& message) const {
-        throw SceneError(file_, t.line, t.column, message);
+    /// Throws a SceneError at `t` whose message is the concatenation of `parts`.
+    template <class... Parts>
+    [[noreturn]] void fail(const Token& t, const Parts&... parts) const {
+        throw SceneError(file_, t.line, t.column, cat(parts...));
     }
 
     /// Reads one number; the token comes back too so that range errors can point at it.
@@ -212,11 +226,11 @@ private:
         switch (t.end() ? NumberStatus::NotANumber : toNumber(t.text, v)) {
             case NumberStatus::Ok: return {v, t};
             case NumberStatus::NotANumber:
-                fail(t, "expected a number for " + what.str() + ", found " + describe(t));
+                fail(t, "expected a number for ", what.str(), ", found ", describe(t));
             case NumberStatus::NotFinite:
-                fail(t, "NaN or infinity is not allowed (" + what.str() + " is " + describe(t) + ")");
+                fail(t, "NaN or infinity is not allowed (", what.str(), " is ", describe(t), ")");
             case NumberStatus::OutOfRange:
-                fail(t, "number out of range for " + what.str() + ": " + describe(t));
+                fail(t, "number out of range for ", what.str(), ": ", describe(t));
         }
         fail(t, "internal error");  // not reached
     }
@@ -233,7 +247,7 @@ private:
         Vec3 c;
         for (int i = 0; i < 3; ++i) {
             const auto [v, t] = numberAt(What{what.item, what.index, kRgb[i]});
-            if (v < 0.0) fail(t, what.str() + " " + kRgb[i] + " must not be negative, found " + describe(t));
+            if (v < 0.0) fail(t, what.str(), " ", kRgb[i], " must not be negative, found ", describe(t));
             c[i] = v;
         }
         return c;
@@ -242,10 +256,10 @@ private:
     /// A whole number in [0, max], checked before anything is allocated for it.
     long count(const What& what, long max) {
         const auto [v, t] = numberAt(what);
-        if (v != std::floor(v)) fail(t, what.str() + " must be a whole number, found " + describe(t));
-        if (v < 0.0) fail(t, what.str() + " must not be negative, found " + describe(t));
+        if (v != std::floor(v)) fail(t, what.str(), " must be a whole number, found ", describe(t));
+        if (v < 0.0) fail(t, what.str(), " must not be negative, found ", describe(t));
         if (v > double(max))
-            fail(t, what.str() + " " + describe(t) + " exceeds the limit of " + std::to_string(max));
+            fail(t, what.str(), " ", describe(t), " exceeds the limit of ", std::to_string(max));
         return long(v);
     }
 
@@ -257,7 +271,7 @@ private:
 
     void view(const Token& v) {
         if (haveView_)
-            fail(v, "a second view ('v') block (the first is at line " + std::to_string(viewLine_) + ")");
+            fail(v, "a second view ('v') block (the first is at line ", std::to_string(viewLine_), ")");
         haveView_ = true;
         viewLine_ = v.line;
         Camera& cam = scene_.camera;
@@ -267,7 +281,7 @@ private:
             const int k = t.end() ? -1 : viewKeyword(t.text);
             if (k < 0) break;
             lex_.next();
-            if (seen[k]) fail(t, "'" + std::string(t.text) + "' appears twice in the view block");
+            if (seen[k]) fail(t, "'", t.text, "' appears twice in the view block");
             seen[k] = t;
             switch (k) {
                 case From: cam.from = vec3("view from"); break;
@@ -276,14 +290,14 @@ private:
                 case Angle: {
                     const auto [a, at] = numberAt(What{"view angle"});
                     if (!(a > 0.0 && a < 180.0))
-                        fail(at, "view angle must be between 0 and 180 degrees (exclusive), found " +
-                                     describe(at));
+                        fail(at, "view angle must be between 0 and 180 degrees (exclusive), found ",
+                             describe(at));
                     cam.angle = a;
                     break;
                 }
                 case Hither: {
                     const auto [h, ht] = numberAt(What{"view hither"});
-                    if (h < 0.0) fail(ht, "view hither must not be negative, found " + describe(ht));
+                    if (h < 0.0) fail(ht, "view hither must not be negative, found ", describe(ht));
                     cam.hither = h;
                     break;
                 }
@@ -293,9 +307,8 @@ private:
                     for (int i = 0; i < 2; ++i) {
                         const auto [r, rt] = numberAt(dims[i]);
                         if (!(r >= 1.0 && r <= double(NffLimits::maxResolution)) || r != std::floor(r))
-                            fail(rt, dims[i].str() + " must be a whole number from 1 to " +
-                                         std::to_string(NffLimits::maxResolution) + ", found " +
-                                         describe(rt));
+                            fail(rt, dims[i].str(), " must be a whole number from 1 to ",
+                                 std::to_string(NffLimits::maxResolution), ", found ", describe(rt));
                         *out[i] = int(r);
                     }
                     break;
@@ -304,7 +317,7 @@ private:
         }
         for (int k : {From, At, Up, Angle, Resolution})
             if (!seen[k])
-                fail(v, "the view ('v') block has no '" + std::string(kViewKeywords[k]) + "'");
+                fail(v, "the view ('v') block has no '", kViewKeywords[k], "'");
         const Vec3 dir = cam.at - cam.from;
         const double dist = glm::length(dir);
         if (!(dist > 0.0)) fail(*seen[At], "view 'at' is the same point as 'from'");
@@ -328,7 +341,7 @@ private:
         m.color = colour(What{"material colour"});
         const auto nonNegative = [&](const char* name) {
             const auto [v, t] = numberAt(What{name});
-            if (v < 0.0) fail(t, std::string(name) + " must not be negative, found " + describe(t));
+            if (v < 0.0) fail(t, name, " must not be negative, found ", describe(t));
             return v;
         };
         m.kd = nonNegative("material Kd");
@@ -336,7 +349,7 @@ private:
         m.shine = nonNegative("material Shine");
         m.kt = nonNegative("material T");
         const auto [ior, it] = numberAt(What{"material index of refraction"});
-        if (!(ior > 0.0)) fail(it, "material index of refraction must be positive, found " + describe(it));
+        if (!(ior > 0.0)) fail(it, "material index of refraction must be positive, found ", describe(it));
         m.ior = ior;
         scene_.materials.push_back(m);
         currentMaterial_ = int(scene_.materials.size()) - 1;
@@ -352,7 +365,7 @@ private:
 
     void checkPrimitiveLimit(const Token& kw) const {
         if (long(scene_.objects.size()) >= maxPrimitives_)
-            fail(kw, "more than " + std::to_string(maxPrimitives_) + " primitives");
+            fail(kw, "more than ", std::to_string(maxPrimitives_), " primitives");
     }
 
     void sphere(const Token& kw) {
@@ -360,7 +373,7 @@ private:
         Sphere s;
         s.c = vec3("sphere centre");
         const auto [r, rt] = numberAt(What{"sphere radius"});
-        if (!(r > 0.0)) fail(rt, "sphere radius must be positive, found " + describe(rt));
+        if (!(r > 0.0)) fail(rt, "sphere radius must be positive, found ", describe(rt));
         s.r = r;
         scene_.addSphere(s, materialForPrimitive());
     }
@@ -372,8 +385,7 @@ private:
         const long n = count(What{withNormals ? "polygon patch vertex count" : "polygon vertex count"},
                              NffLimits::maxPolygonVertices);
         if (n < 3)
-            fail(countToken, std::string("a ") + item + " needs at least 3 vertices, found " +
-                                 describe(countToken));
+            fail(countToken, "a ", item, " needs at least 3 vertices, found ", describe(countToken));
         std::vector<Vec3> vertices, normals;
         vertices.reserve(std::size_t(n));
         if (withNormals) normals.reserve(std::size_t(n));
@@ -391,16 +403,16 @@ private:
         const std::string_view k = t.text;
         double v = 0.0;
         if (toNumber(k, v) != NumberStatus::NotANumber)
-            fail(t, "unexpected number " + describe(t) +
-                        " where an NFF keyword was expected (too many numbers before it?)");
+            fail(t, "unexpected number ", describe(t),
+                 " where an NFF keyword was expected (too many numbers before it?)");
         const unsigned char c0 = static_cast<unsigned char>(k[0]);
         const bool word = (c0 >= 'a' && c0 <= 'z') || (c0 >= 'A' && c0 <= 'Z');
-        if (!word) fail(t, "unexpected " + describe(t) + " where an NFF keyword was expected");
+        if (!word) fail(t, "unexpected ", describe(t), " where an NFF keyword was expected");
         std::string what;
         if (k == "c") what = " (cone/cylinder)";
         else if (k == "tpp") what = " (textured polygonal patch)";
         else if (k == "tp" || k == "tt") what = " (textured polygon)";
-        fail(t, "unsupported NFF primitive " + describe(t) + what);
+        fail(t, "unsupported NFF primitive ", describe(t), what);
     }
 
     Lexer lex_;
@@ -417,7 +429,7 @@ private:
 Scene parseNff(std::string_view text, const std::string& fileName, long maxPrimitives) {
     if (text.size() > NffLimits::maxFileBytes)
         throw SceneError(fileName, 0, 0,
-                         "input is larger than " + std::to_string(NffLimits::maxFileBytes) + " bytes");
+                         cat("input is larger than ", std::to_string(NffLimits::maxFileBytes), " bytes"));
     Scene scene = Parser(text, fileName, maxPrimitives).parse();
     scene.name = std::filesystem::path(fileName).stem().string();
     return scene;
@@ -428,7 +440,7 @@ Scene readNffFile(const std::string& path) {
     if (std::filesystem::is_directory(path, ec))
         throw SceneError(path, 0, 0, "cannot read: it is a directory");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path, 0, 0, std::string("cannot open file: ") + std::strerror(errno));
+    if (!in) throw SceneError(path, 0, 0, cat("cannot open file: ", std::strerror(errno)));
     std::string text;
     char buffer[1 << 16];
     while (in) {
@@ -436,7 +448,7 @@ Scene readNffFile(const std::string& path) {
         text.append(buffer, std::size_t(in.gcount()));
         if (text.size() > NffLimits::maxFileBytes)
             throw SceneError(path, 0, 0,
-                             "file is larger than " + std::to_string(NffLimits::maxFileBytes) + " bytes");
+                             cat("file is larger than ", std::to_string(NffLimits::maxFileBytes), " bytes"));
     }
     if (in.bad()) throw SceneError(path, 0, 0, "read error");
     return parseNff(text, path);

@@ -1,0 +1,96 @@
+// The raycache command line: stats keys, exit codes, clear errors.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Result {
+    int code;
+    std::string output;
+};
+
+Result run(const std::string& args) {
+    const fs::path out = fs::temp_directory_path() / ("raycache_cli_" + std::to_string(::getpid()) + ".txt");
+    const std::string cmd = std::string(RAYCACHE_CLI) + " " + args + " > " + out.string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(out);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    fs::remove(out);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("raycache_cli_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir / name;
+}
+}  // namespace
+
+TEST_CASE("render writes a PNG and stats JSON with the documented keys", "[cli]") {
+    const fs::path png = scratch("a.png"), json = scratch("a.json");
+    const Result r = run("render cube:3 --width 32 --height 24 --cache blocker --order bfs --verify -o " +
+                         png.string() + " --stats " + json.string());
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    REQUIRE(fs::file_size(png) > 100);
+    std::ifstream in(json);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const char* key : {"scene", "width", "height", "cache", "order", "seconds", "rays", "intersection_tests",
+                            "complete_searches", "cylinder_tests", "blocker_lists", "beam_tree",
+                            "complete_searches_per_beam", "queue_peak", "regions"})
+        REQUIRE(j.contains(key));
+    for (const char* key : {"primary", "shadow", "reflection", "refraction", "total"}) REQUIRE(j["rays"].contains(key));
+    for (const char* key : {"hits", "misses", "miss_reasons", "verify_disagreements"}) REQUIRE(j["cache"].contains(key));
+    for (const char* key : {"cold", "target_missed", "blocker_hit", "left_cylinder", "flushed"})
+        REQUIRE(j["cache"]["miss_reasons"].contains(key));
+    REQUIRE(j["width"] == 32);
+    REQUIRE(j["rays"]["primary"] == 32 * 24);
+    REQUIRE(j["cache"]["verify_disagreements"] == 0);
+    REQUIRE(j["order"] == "bfs");
+    REQUIRE(j["cache"]["strategy"] == "blocker");
+}
+
+TEST_CASE("a malformed scene exits 2 naming file and line", "[cli]") {
+    const fs::path bad = scratch("bad.nff");
+    {
+        std::ofstream out(bad);
+        out << "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 8 8\ns 0 0 0 -1\n";
+    }
+    const Result r = run("render " + bad.string() + " -o " + scratch("bad.png").string());
+    INFO(r.output);
+    REQUIRE(r.code == 2);
+    REQUIRE(r.output.find(bad.string() + ":8:") != std::string::npos);
+    REQUIRE_FALSE(fs::exists(scratch("bad.png")));
+}
+
+TEST_CASE("bad flags and values exit 2 with a message", "[cli]") {
+    for (const char* args : {"render cube:3 --cache bogus", "render cube:3 --width 0", "render cube:3 --order sideways",
+                             "render cube:99999", "render", "frobnicate", "render cube:3 --depth x"}) {
+        const Result r = run(args);
+        INFO(args << "\n" << r.output);
+        REQUIRE(r.code == 2);
+        REQUIRE_FALSE(r.output.empty());
+    }
+}
+
+TEST_CASE("scenes and info describe the built-ins", "[cli]") {
+    const Result scenes = run("scenes");
+    REQUIRE(scenes.code == 0);
+    REQUIRE(scenes.output.find("cube:N") != std::string::npos);
+    const Result info = run("info cube:3");
+    REQUIRE(info.code == 0);
+    REQUIRE(info.output.find("spheres    27") != std::string::npos);
+    REQUIRE(info.output.find("shadow") != std::string::npos);
+}

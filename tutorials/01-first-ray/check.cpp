@@ -1,0 +1,80 @@
+// Tutorial 01's check: tutorial::nearestHit against the library's complete search,
+// rc::LinearSearch, on seeded random scenes and rays.
+#include <catch2/catch.hpp>
+
+#include <glm/geometric.hpp>
+
+#include "exercise.h"
+#include "scene/builtin_scenes.h"
+#include "search/complete_search.h"
+#include "tutorial_random.h"
+
+namespace {
+
+rc::Scene randomScene(tutorial::Random& rnd, int spheres, bool twins) {
+    rc::Scene s;
+    s.materials.push_back({});
+    for (int i = 0; i < spheres; ++i) s.addSphere({rnd.inBox(10.0), rnd.uniform(0.2, 2.5)}, 0);
+    // Coincident spheres: equal distances, the lower id must win
+    if (twins)
+        for (int i = 0; i < spheres / 4; ++i) s.addSphere(s.spheres[rnd.index(spheres)], 0);
+    s.finalize();
+    return s;
+}
+
+// A random query: from a free point, or leaving (or entering) a sphere's surface
+rc::Query randomQuery(tutorial::Random& rnd, const rc::Scene& s) {
+    rc::Query q;
+    if (rnd.chance(0.5)) {
+        q.ray = {rnd.inBox(14.0), rnd.direction()};
+    } else {
+        const int k = rnd.index(s.size());
+        const rc::Sphere& sp = s.spheres[s.objects[k].index];
+        const rc::Vec3 n = rnd.direction();
+        q.ray = {sp.c + sp.r * n, rnd.direction()};
+        q.origin = {k, glm::dot(q.ray.d, n) < 0.0};
+    }
+    if (rnd.chance(0.3)) q.tmax = rnd.uniform(0.5, 20.0);  // like a shadow ray to its light
+    return q;
+}
+
+}  // namespace
+
+TEST_CASE("nearestHit agrees with the complete search on random scenes", "[tutorial01]") {
+    tutorial::Random rnd(1986);
+    int hits = 0, cases = 0;
+    for (int scene = 0; scene < 40; ++scene) {
+        const rc::Scene s = randomScene(rnd, 5 + rnd.index(60), scene % 4 == 0);
+        const rc::LinearSearch search(s);
+        for (int i = 0; i < 500; ++i) {
+            const rc::Query q = randomQuery(rnd, s);
+            rc::Counters n;
+            const rc::Answer want = search.nearest(q, n);
+            const rc::Answer got = tutorial::nearestHit(s, q);
+            INFO("scene " << scene << " ray " << i << ": origin (" << q.ray.o.x << ", " << q.ray.o.y << ", "
+                          << q.ray.o.z << ") from object " << q.origin.object);
+            REQUIRE(got.object == want.object);
+            REQUIRE(got.t == want.t);  // the same routine on the same sphere: bit for bit
+            hits += want.object >= 0;
+            ++cases;
+        }
+    }
+    // The cases are worth something only if many rays hit
+    CHECK(hits > cases / 4);
+}
+
+TEST_CASE("nearestHit finds what the eye sees in cube:3", "[tutorial01]") {
+    const rc::Scene s = rc::makeBuiltin("cube:3");
+    const rc::LinearSearch search(s);
+    const int w = 48, h = 48;
+    const rc::RayGenerator camera(s.camera, w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            rc::Query q;
+            q.ray = camera.primary(x, y);
+            rc::Counters n;
+            const rc::Answer want = search.nearest(q, n);
+            INFO("pixel (" << x << ", " << y << ")");
+            REQUIRE(tutorial::nearestHit(s, q) == want);
+        }
+}

@@ -1,0 +1,66 @@
+#include "cache_tree_panel.h"
+
+#include <cmath>
+#include <vector>
+
+#include <QHeaderView>
+
+#include "labels.h"
+
+namespace rcgui {
+
+CacheTreePanel::CacheTreePanel(QWidget* parent) : QTreeWidget(parent) {
+    setHeaderLabels({"path", "state", "origin", "object", "holds"});
+    setAlternatingRowColors(true);
+    header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+}
+
+void CacheTreePanel::refresh(const SessionState* state) {
+    if (!state) return;
+    const rc::CacheTree& tree = state->session().cacheTree();
+    const rc::BlockerLists* lists = state->session().strategy().blockerLists();
+    const rc::Scene& scene = state->scene();
+    // Reuse items so the scroll position and expansion survive a refresh
+    std::vector<QTreeWidgetItem*> items(tree.size(), nullptr);
+    for (int i = 0; i < tree.size(); ++i) {
+        const auto& node = tree.node(i);
+        QTreeWidgetItem* parent = node.parent >= 0 ? items[node.parent] : nullptr;
+        QTreeWidgetItem* item = nullptr;
+        if (parent) item = i < 0 ? nullptr : nullptr;
+        // Find an existing item for this node
+        const int count = parent ? parent->childCount() : topLevelItemCount();
+        for (int k = 0; k < count && !item; ++k) {
+            QTreeWidgetItem* c = parent ? parent->child(k) : topLevelItem(k);
+            if (c->data(0, Qt::UserRole).toInt() == i) item = c;
+        }
+        if (!item) {
+            item = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(this);
+            item->setData(0, Qt::UserRole, i);
+            item->setExpanded(true);
+        }
+        items[i] = item;
+        const rc::CacheEntry& e = node.entry;
+        item->setText(0, QString::fromStdString(tree.label(i)));
+        item->setText(1, e.state == rc::CacheEntry::State::Loaded ? "loaded"
+                         : e.state == rc::CacheEntry::State::Flushed ? "flushed" : "empty");
+        item->setText(2, e.origin.object < 0 ? QString("eye") : objectName(scene, e.origin.object) + (e.origin.inside ? " (inside)" : ""));
+        item->setText(3, e.state == rc::CacheEntry::State::Empty ? QString() : objectName(scene, e.object));
+        QString holds;
+        if (lists && e.blockerTarget >= 0) {
+            const std::vector<int>* l = lists->find(e.blockerOrigin, e.blockerTarget);
+            holds = QString("blocker list: %1").arg(l ? int(l->size()) : 0);
+            if (l && !l->empty()) {
+                QStringList ids;
+                for (std::size_t k = 0; k < l->size() && k < 8; ++k) ids << QString::number((*l)[k]);
+                holds += " [" + ids.join(' ') + (l->size() > 8 ? " …]" : "]");
+            }
+        } else if (e.cylinder.radius >= 0.0) {
+            holds = QString("cylinder R = %1").arg(e.cylinder.radius, 0, 'g', 4);
+        } else if (e.coneAngle >= 0.0) {
+            holds = QString("empty cone %1°").arg(e.coneAngle * 180.0 / M_PI, 0, 'g', 3);
+        }
+        item->setText(4, holds);
+    }
+}
+
+}  // namespace rcgui

@@ -1,0 +1,58 @@
+#include "heatmap_builder.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "palette.h"
+#include "session_controller.h"
+
+namespace rcgui {
+
+QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path) {
+    if (mode == Heatmap::None) return SessionController::imageOf(s);
+    const TraceRecorder& rec = s.recorder();
+    const int w = s.width(), h = s.height(), n = w * h;
+    QImage img(w, h, QImage::Format_RGB32);
+    img.fill(Qt::black);
+    auto set = [&](int px, const QColor& c) { img.setPixelColor(px % w, px / w, c); };
+    switch (mode) {
+        case Heatmap::None: break;
+        case Heatmap::Tests: {
+            // Logarithmic: a pixel's tests span 1 to thousands
+            std::int32_t most = 1;
+            for (int px = 0; px < n; ++px) most = std::max(most, rec.testsAt(px));
+            const double top = std::log1p(double(most));
+            for (int px = 0; px < n; ++px)
+                if (rec.firstVisit(px) >= 0) set(px, palette::ramp(std::log1p(double(rec.testsAt(px))) / top));
+            break;
+        }
+        case Heatmap::HitMiss: {
+            for (int px = 0; px < n; ++px) {
+                if (rec.firstVisit(px) < 0) continue;
+                const double hits = rec.hitsAt(px), misses = rec.missesAt(px);
+                if (hits + misses == 0) {
+                    set(px, QColor(110, 110, 110));  // no cache: every ray searched
+                    continue;
+                }
+                const double f = misses / (hits + misses);
+                set(px, QColor(int(40 + 215 * f), int(200 * (1 - f) + 30), 40));
+            }
+            break;
+        }
+        case Heatmap::VisitOrder: {
+            const double last = std::max<double>(1.0, double(s.session().steps()));
+            for (int px = 0; px < n; ++px)
+                if (rec.firstVisit(px) >= 0) set(px, palette::ramp(double(rec.firstVisit(px)) / last));
+            break;
+        }
+        case Heatmap::BeamNode: {
+            const std::vector<int> labels = s.beams().labels(path);
+            for (int px = 0; px < n; ++px)
+                if (labels[px] >= 0) set(px, palette::label(labels[px]));
+            break;
+        }
+    }
+    return img;
+}
+
+}  // namespace rcgui

@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// \brief Short readable names of core enums and objects for the panels.
+#include <QString>
+
+#include "event_record.h"
+#include "scene/scene.h"
+
+namespace rcgui {
+
+QString text(std::string_view s);
+/// "#12 sphere" or "nothing".
+QString objectName(const rc::Scene& scene, int object);
+/// "hit", "miss: blocker_hit", "deferred: target_missed", "search".
+QString decisionText(const EventRecord& r);
+
+}  // namespace rcgui

@@ -1,0 +1,38 @@
+#include "overlay_options.h"
+
+namespace rcgui {
+
+QString toString(Heatmap h) {
+    switch (h) {
+        case Heatmap::None: return "none";
+        case Heatmap::Tests: return "tests";
+        case Heatmap::HitMiss: return "hitmiss";
+        case Heatmap::VisitOrder: return "order";
+        case Heatmap::BeamNode: return "beam";
+    }
+    return "none";
+}
+
+std::optional<Heatmap> parseHeatmap(const QString& s) {
+    for (Heatmap h : {Heatmap::None, Heatmap::Tests, Heatmap::HitMiss, Heatmap::VisitOrder, Heatmap::BeamNode})
+        if (toString(h) == s.trimmed().toLower()) return h;
+    return std::nullopt;
+}
+
+std::optional<Overlays> Overlays::parse(const QString& list) {
+    Overlays o;
+    for (const QString& raw : list.split(',', Qt::SkipEmptyParts)) {
+        const QString w = raw.trimmed().toLower();
+        if (w == "cylinder") o.cylinder = true;
+        else if (w == "cone" || w == "hull" || w == "blocker") o.hull = true;
+        else if (w == "frontier" || w == "bfs") o.frontier = true;
+        else if (w == "misses" || w == "miss") o.misses = true;
+        else if (w == "grid") o.grid = true;
+        else if (w == "all") o.cylinder = o.hull = o.frontier = o.misses = true;
+        else if (w == "none") o.cylinder = o.hull = o.frontier = o.misses = false;
+        else return std::nullopt;
+    }
+    return o;
+}
+
+}  // namespace rcgui

@@ -1,0 +1,296 @@
+#include "overlay_painter.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <QPainterPath>
+
+#include "palette.h"
+#include "projector.h"
+
+namespace rcgui {
+
+namespace {
+
+QPen cosmetic(const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine) {
+    QPen pen(c, width, style, Qt::RoundCap, Qt::RoundJoin);
+    pen.setCosmetic(true);
+    return pen;
+}
+
+QColor withAlpha(QColor c, int a) {
+    c.setAlpha(a);
+    return c;
+}
+
+// Draws a closed outline twice: a dark halo, then the colour, so it reads on any image
+void outline(QPainter& p, const QPolygonF& poly, const QColor& c, double width,
+             Qt::PenStyle style = Qt::SolidLine, const QColor& fill = Qt::transparent) {
+    if (poly.size() < 2) return;
+    p.setBrush(Qt::NoBrush);
+    if (fill.alpha() > 0) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(fill);
+        p.drawPolygon(poly);
+        p.setBrush(Qt::NoBrush);
+    }
+    p.setPen(cosmetic(QColor(0, 0, 0, 160), width + 2.0));
+    p.drawPolygon(poly);
+    p.setPen(cosmetic(c, width, style));
+    p.drawPolygon(poly);
+}
+
+void line(QPainter& p, const QLineF& l, const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine) {
+    p.setPen(cosmetic(QColor(0, 0, 0, 160), width + 2.0));
+    p.drawLine(l);
+    p.setPen(cosmetic(c, width, style));
+    p.drawLine(l);
+}
+
+QPointF pixelCentre(int pixel, int width) {
+    return QPointF(pixel % width + 0.5, pixel / width + 0.5);
+}
+
+}  // namespace
+
+void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
+                           double scale) {
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const Projector proj(s.scene().camera, s.camera());
+    if (o.frontier) paintFrontier(p, s, scale);
+    if (o.misses) paintMisses(p, s, scale);
+    if (sel.object >= 0 && sel.object < s.scene().size())
+        paintObject(p, s, proj, sel.object, palette::kSelection, withAlpha(palette::kSelection, 70), 3.0);
+    if (auto f = RayFocus::current(s)) paintFocus(p, s, proj, *f, o);
+    if (sel.pixel >= 0 && sel.pixel < s.width() * s.height()) {
+        int index = sel.event;
+        if (index < 0) index = s.recorder().eventAt(sel.pixel, 0);
+        if (index >= 0) paintFocus(p, s, proj, RayFocus::recorded(s, index), o);
+        const QPointF c = pixelCentre(sel.pixel, s.width());
+        const double half = std::max(0.5, 7.0 / scale);
+        outline(p, QPolygonF(QRectF(c.x() - half, c.y() - half, 2 * half, 2 * half)), palette::kSelection, 2.5);
+    }
+}
+
+void OverlayPainter::paintFocus(QPainter& p, const SessionState& s, const Projector& proj,
+                                const RayFocus& f, const Overlays& o) {
+    if (o.hull) paintHull(p, s, proj, f);
+    if (o.cylinder) paintCylinder(p, s, proj, f);
+    if (!(o.hull || o.cylinder)) return;
+    // The ray itself: from its origin to the end of its segment, and its pixel
+    if (auto l = proj.segment(f.ray.o, f.segmentEnd(s.scene())); l && l->length() > 0.5)
+        line(p, *l, palette::kRay, 2.5);
+    const QPointF c = pixelCentre(f.pixel, s.width());
+    p.setPen(cosmetic(Qt::black, 2.0));
+    p.setBrush(palette::kRay);
+    const QTransform t = p.transform();
+    const double r = 5.0 / std::max(1e-9, std::sqrt(std::abs(t.determinant())));
+    p.drawEllipse(c, r, r);
+}
+
+void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Projector& proj,
+                                   const RayFocus& f) {
+    // The active entry's cylinder when it has one, else the cylinder around this ray's segment
+    rc::SafetyCylinder cyl;
+    bool cached = false;
+    if (f.current) {
+        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        if (e.state == rc::CacheEntry::State::Loaded && e.cylinder.radius >= 0.0) {
+            cyl = e.cylinder;
+            cached = true;
+        }
+    }
+    if (!cached) cyl = cylinderAround(s.scene(), f);
+    if (!(cyl.radius > 0.0)) return;
+    const QPolygonF shape = proj.hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius});
+    outline(p, shape, palette::kCylinder, cached ? 2.5 : 2.0, cached ? Qt::SolidLine : Qt::DashLine,
+            withAlpha(palette::kCylinder, cached ? 60 : 35));
+    if (auto l = proj.segment(cyl.a, cyl.b); l && l->length() > 0.5)
+        line(p, *l, palette::kCylinder, 1.5, Qt::DashLine);
+}
+
+void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
+    const rc::BlockerLists* lists = s.session().strategy().blockerLists();
+    if (!lists) return;
+    int origin = -1, target = -1;
+    if (f.current) {
+        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        if (e.state == rc::CacheEntry::State::Loaded) {
+            origin = e.blockerOrigin;
+            target = e.blockerTarget;
+        }
+    } else {
+        origin = lists->originSite(f.origin);
+        target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light) : f.hit;
+    }
+    if (origin < 0 || target < 0) return;
+    const rc::Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
+    outline(p, proj.hull(a, b), palette::kHull, 2.5, Qt::SolidLine, withAlpha(palette::kHull, 45));
+    outline(p, proj.silhouette(a), palette::kOrigin, 1.5, Qt::DashLine);
+    const rc::Scene& scene = s.scene();
+    if (const std::vector<int>* blockers = lists->find(origin, target))
+        for (int id : *blockers)
+            paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 110), 3.0);
+    if (target < scene.size()) {
+        paintObject(p, s, proj, target, palette::kTarget, withAlpha(palette::kTarget, 40), 3.0);
+    } else if (auto c = proj.point(b.c)) {
+        // A light: a small star
+        p.setPen(cosmetic(palette::kTarget, 3.0));
+        const double r = 8.0 / std::sqrt(std::abs(p.transform().determinant()));
+        for (int k = 0; k < 4; ++k) {
+            const double ang = k * M_PI / 4;
+            p.drawLine(*c - QPointF(r * std::cos(ang), r * std::sin(ang)), *c + QPointF(r * std::cos(ang), r * std::sin(ang)));
+        }
+    }
+}
+
+void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Projector& proj, int object,
+                                 const QColor& lineColor, const QColor& fill, double width) {
+    const rc::Scene& scene = s.scene();
+    const rc::Object& obj = scene.objects[object];
+    if (obj.shape == rc::Shape::Polygon)
+        outline(p, proj.polygon(scene.polygons[obj.index]), lineColor, width, Qt::SolidLine, fill);
+    else
+        outline(p, proj.silhouette(obj.bound), lineColor, width, Qt::SolidLine, fill);
+}
+
+void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale) {
+    const rc::FrontierView f = s.session().order().frontier();
+    const TraceRecorder& rec = s.recorder();
+    const int w = s.width(), h = s.height();
+    // Regions of the path being filled: finished ones tinted, the current one bright
+    if (f.path >= 0) {
+        if (cachedState_ != &s || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
+            regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
+            regions_.fill(Qt::transparent);
+            for (int px = 0; px < w * h; ++px) {
+                const int i = rec.eventAt(px, f.path);
+                if (i < 0) continue;
+                const int region = rec.events()[i].region;
+                const QColor c = region == f.region ? withAlpha(palette::kRegion, 150) : palette::label(region, 95);
+                regions_.setPixelColor(px % w, px / w, QColor::fromRgba(qPremultiply(c.rgba())));
+            }
+            cachedState_ = &s;
+            cachedEvents_ = rec.events().size();
+            cachedPath_ = f.path;
+        }
+        p.drawImage(QRectF(0, 0, w, h), regions_);
+    }
+    // Queued pixels and deferred seeds: at least a few screen pixels big
+    const double size = std::max(1.0, 6.0 / scale);
+    auto mark = [&](int px, const QColor& c) {
+        const QPointF ctr = pixelCentre(px, w);
+        p.drawRect(QRectF(ctr.x() - size / 2, ctr.y() - size / 2, size, size));
+        (void)c;
+    };
+    p.setPen(cosmetic(Qt::black, 1.0));
+    p.setBrush(palette::kDeferred);
+    for (int px : f.deferred) mark(px, palette::kDeferred);
+    p.setBrush(palette::kQueued);
+    for (int px : f.queued) mark(px, palette::kQueued);
+}
+
+void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scale) {
+    const TraceRecorder& rec = s.recorder();
+    const int w = s.width(), h = s.height();
+    std::array<QVector<QPointF>, rc::kMissReasons> points;
+    for (int px = 0; px < w * h; ++px) {
+        const rc::MissReason r = rec.missReasonAt(px);
+        if (r != rc::MissReason::None) points[int(r)] << pixelCentre(px, w);
+    }
+    const double width = std::clamp(scale * 0.55, 2.0, 12.0);
+    for (int r = 1; r < rc::kMissReasons; ++r) {
+        if (points[r].isEmpty()) continue;
+        p.setPen(cosmetic(palette::missReason(rc::MissReason(r)), width));
+        p.drawPoints(points[r].constData(), int(points[r].size()));
+    }
+}
+
+void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
+                                 const QRectF& area) {
+    (void)sel;
+    QStringList caption;
+    std::vector<std::pair<QColor, QString>> keys;
+    const rc::RenderSession& session = s.session();
+    caption << QString("%1  %2/%3  %4  step %5")
+                   .arg(QString::fromStdString(s.scene().name))
+                   .arg(QString::fromUtf8(rc::toString(session.strategy().kind()).data()))
+                   .arg(QString::fromUtf8(rc::toString(session.order().kind()).data()))
+                   .arg(QString("%1x%2").arg(s.width()).arg(s.height()))
+                   .arg(session.steps());
+    if (auto f = RayFocus::current(s)) {
+        const auto& e = *s.recorder().lastEvent();
+        QString d = QString::fromUtf8(rc::toString(e.lookup.decision).data());
+        if (e.lookup.reason != rc::MissReason::None)
+            d += QString(" (%1)").arg(QString::fromUtf8(rc::toString(e.lookup.reason).data()));
+        if (e.deferred) d = "deferred: " + d;
+        caption << QString("ray: pixel (%1,%2)  %3  hit %4  %5  %6 tests")
+                       .arg(f->pixel % s.width()).arg(f->pixel / s.width())
+                       .arg(QString::fromStdString(session.cacheTree().label(f->node)))
+                       .arg(f->hit >= 0 ? QString("#%1").arg(f->hit) : QString("nothing"))
+                       .arg(d).arg(e.tests);
+    }
+    if (o.hull || o.cylinder) keys.push_back({palette::kRay, "ray being traced"});
+    if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
+    if (o.hull) {
+        if (session.strategy().blockerLists()) {
+            keys.push_back({palette::kHull, "blocker hull of origin and target"});
+            keys.push_back({palette::kTarget, "target (cached object)"});
+            keys.push_back({palette::kBlocker, "potential blockers"});
+        } else {
+            keys.push_back({palette::kHull, "blocker hull: blocker cache only"});
+        }
+    }
+    if (o.frontier) {
+        const rc::FrontierView f = session.order().frontier();
+        if (f.path >= 0) {
+            keys.push_back({palette::kQueued, QString("queued (%1)").arg(f.queued.size())});
+            keys.push_back({palette::kDeferred, QString("deferred seeds (%1)").arg(f.deferred.size())});
+            keys.push_back({palette::kRegion, QString("region %1 being filled, path %2")
+                                                  .arg(f.region)
+                                                  .arg(QString::fromStdString(session.cacheTree().label(f.path)))});
+            keys.push_back({palette::label(3), "finished regions (tints)"});
+        } else {
+            keys.push_back({palette::kQueued, "frontier: breadth-first order only"});
+        }
+    }
+    if (o.misses) {
+        const rc::Counters& n = session.counters();
+        for (int r = 1; r < rc::kMissReasons; ++r)
+            if (n.missReasons[r] > 0)
+                keys.push_back({palette::missReason(rc::MissReason(r)),
+                                QString("miss: %1 (%2)").arg(QString::fromUtf8(rc::toString(rc::MissReason(r)).data()))
+                                    .arg(n.missReasons[r])});
+    }
+    if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
+
+    const QFontMetricsF fm(p.font());
+    const double lh = fm.height() + 2;
+    double width = 0;
+    for (const QString& c : caption) width = std::max(width, fm.horizontalAdvance(c));
+    for (const auto& k : keys) width = std::max(width, fm.horizontalAdvance(k.second) + lh * 1.3);
+    if (!o.legend) keys.clear();
+    const double height = lh * (caption.size() + keys.size()) + 8;
+    QRectF box(area.left() + 8, area.top() + 8, width + 16, height);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 175));
+    p.drawRoundedRect(box, 6, 6);
+    double y = box.top() + 4;
+    p.setPen(Qt::white);
+    for (const QString& c : caption) {
+        p.drawText(QRectF(box.left() + 8, y, width, lh), Qt::AlignVCenter | Qt::AlignLeft, c);
+        y += lh;
+    }
+    for (const auto& [colour, text] : keys) {
+        p.setPen(QPen(Qt::black, 1));
+        p.setBrush(colour);
+        p.drawRect(QRectF(box.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
+        p.setPen(Qt::white);
+        p.drawText(QRectF(box.left() + 8 + lh * 1.3, y, width, lh), Qt::AlignVCenter | Qt::AlignLeft, text);
+        y += lh;
+    }
+}
+
+}  // namespace rcgui

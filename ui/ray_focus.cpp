@@ -1,0 +1,64 @@
+#include "ray_focus.h"
+
+#include <algorithm>
+
+#include "geometry/intersection.h"
+
+namespace rcgui {
+
+rc::Vec3 RayFocus::segmentEnd(const rc::Scene& scene) const {
+    if (hit >= 0 && t >= 0.0) return ray.at(t);
+    if (tmax >= 0.0) return ray.at(tmax);
+    const rc::SphereRoots r = rc::sphereRootsStable(ray, scene.bound);
+    return ray.at(r.hit ? std::max(0.0, r.t1) : 0.0);
+}
+
+std::optional<RayFocus> RayFocus::current(const SessionState& s) {
+    const auto& e = s.recorder().lastEvent();
+    if (!e) return std::nullopt;
+    RayFocus f;
+    const rc::Query& q = e->task.query;
+    f.pixel = e->task.pixel;
+    f.node = e->task.node;
+    f.kind = q.kind;
+    f.light = q.light;
+    f.origin = q.origin;
+    f.hit = e->lookup.known ? e->lookup.answer.object : -1;
+    f.ray = q.ray;
+    f.t = f.hit >= 0 ? e->lookup.answer.t : -1.0;
+    f.tmax = q.tmax < rc::kNoHit ? q.tmax : -1.0;
+    f.current = true;
+    f.deferred = e->deferred;
+    return f;
+}
+
+RayFocus RayFocus::recorded(const SessionState& s, int index) {
+    const EventRecord& r = s.recorder().events()[index];
+    RayFocus f;
+    f.pixel = r.pixel;
+    f.node = r.node;
+    f.kind = r.rayKind();
+    f.light = s.session().cacheTree().node(r.node).light;
+    f.origin = {r.origin, bool(r.flags & EventRecord::Inside)};
+    f.hit = r.hit;
+    f.ray = {r.rayOrigin(), r.rayDirection()};
+    f.t = r.t;
+    f.tmax = r.tmax;
+    f.deferred = r.deferred();
+    return f;
+}
+
+rc::SafetyCylinder cylinderAround(const rc::Scene& scene, const RayFocus& f) {
+    const rc::Vec3 from = f.ray.o;
+    const rc::Vec3 to = f.segmentEnd(scene);
+    double radius = rc::kNoHit;
+    for (int id = 0; id < scene.size(); ++id) {
+        if (id == f.hit) continue;
+        if (id == f.origin.object && !f.origin.inside) continue;
+        const rc::Sphere& s = scene.objects[id].bound;
+        radius = std::min(radius, rc::segmentDistance(s.c, from, to) - s.r);
+    }
+    return {from, to, radius < rc::kNoHit ? radius : -1.0};
+}
+
+}  // namespace rcgui

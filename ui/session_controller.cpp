@@ -1,0 +1,95 @@
+#include "session_controller.h"
+
+#include <QCoreApplication>
+#include <QThread>
+
+namespace rcgui {
+
+SessionController::SessionController(QObject* parent) : QObject(parent) {}
+
+SessionController::~SessionController() {
+    cancel();
+    if (worker_) {
+        worker_->wait();
+        delete worker_;
+        worker_ = nullptr;
+    }
+}
+
+QImage SessionController::imageOf(const SessionState& s) {
+    const std::vector<std::uint8_t> rgb = s.session().image().rgb8();
+    QImage img(s.width(), s.height(), QImage::Format_RGB888);
+    for (int y = 0; y < s.height(); ++y)
+        std::copy_n(rgb.data() + std::size_t(y) * s.width() * 3, std::size_t(s.width()) * 3,
+                    img.scanLine(y));
+    return img;
+}
+
+void SessionController::reset(SessionConfig config) {
+    cancel();
+    wait();
+    state_ = std::make_unique<SessionState>(std::move(config));
+    emit changed();
+}
+
+bool SessionController::stepRay() {
+    if (busy_ || !state_) return false;
+    const bool more = state_->step();
+    emit changed();
+    return more;
+}
+
+bool SessionController::start(RunGoal goal, std::int64_t target) {
+    if (busy_ || !state_) return false;
+    busy_ = true;
+    cancel_ = false;
+    emit busyChanged(true);
+    SessionState* s = state_.get();
+    worker_ = QThread::create([this, s, goal, target] {
+        const bool ok = s->runUntil(goal, target, &cancel_, [this, s] {
+            // The worker owns the state: it alone may read it, so it makes the snapshot
+            const QImage img = imageOf(*s);
+            const qint64 steps = s->session().steps();
+            const double progress = s->session().progress();
+            QMetaObject::invokeMethod(this, [this, img, steps, progress] {
+                if (busy_) emit snapshot(img, steps, progress);
+            }, Qt::QueuedConnection);
+        });
+        QMetaObject::invokeMethod(this, [this, ok] { onWorkerDone(ok); }, Qt::QueuedConnection);
+    });
+    worker_->start();
+    return true;
+}
+
+bool SessionController::stepBack() {
+    if (busy_ || !state_) return false;
+    const std::int64_t target = state_->session().steps() - 1;
+    if (target < 0) return false;
+    state_ = std::make_unique<SessionState>(state_->config());
+    return start(RunGoal::ToStep, target);
+}
+
+void SessionController::cancel() { cancel_ = true; }
+
+void SessionController::wait() {
+    while (busy_) {
+        if (worker_) worker_->wait();
+        // The worker's hand-back is a queued call: deliver it
+        QCoreApplication::sendPostedEvents(this);
+        QCoreApplication::processEvents();
+    }
+}
+
+void SessionController::onWorkerDone(bool completed) {
+    if (worker_) {
+        worker_->wait();
+        delete worker_;
+        worker_ = nullptr;
+    }
+    busy_ = false;
+    emit busyChanged(false);
+    emit finished(completed);
+    emit changed();
+}
+
+}  // namespace rcgui

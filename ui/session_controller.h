@@ -1,0 +1,64 @@
+#pragma once
+/// \file
+/// \brief Owns the GUI's render and runs long stretches of it on a worker thread.
+#include <atomic>
+#include <memory>
+
+#include <QImage>
+#include <QObject>
+
+#include "session_state.h"
+
+class QThread;
+
+namespace rcgui {
+
+/// Owns the current SessionState. While a worker runs, the worker alone touches the
+/// state: state() returns null, and the GUI sees the render through snapshot()
+/// images. When the worker stops, it hands the state back and finished() is emitted.
+class SessionController : public QObject {
+    Q_OBJECT
+public:
+    explicit SessionController(QObject* parent = nullptr);
+    ~SessionController() override;
+
+    /// Starts a new render (cancels a running worker first).
+    void reset(SessionConfig config);
+    /// The state, or null while a worker runs or before the first reset().
+    SessionState* state() { return busy_ ? nullptr : state_.get(); }
+    const SessionState* state() const { return busy_ ? nullptr : state_.get(); }
+    bool busy() const { return busy_; }
+
+    /// Traces one ray on the calling (GUI) thread. False if busy or done.
+    bool stepRay();
+    /// Runs towards `goal` on a worker thread. False if busy.
+    bool start(RunGoal goal, std::int64_t target = 0);
+    /// Rebuilds the render and replays it to one step before the current one, on the
+    /// worker: the core is deterministic, so the state is the one of that step.
+    bool stepBack();
+    /// Asks the worker to stop; it hands the state back soon after.
+    void cancel();
+    /// Waits until the worker has stopped and the state is back (processes its signals).
+    void wait();
+
+    /// The image as rgb8 converted to a QImage (the caller must not be racing a worker).
+    static QImage imageOf(const SessionState& s);
+
+signals:
+    /// The state changed (a step, a reset, a finished run): everything should refresh.
+    void changed();
+    void busyChanged(bool busy);
+    /// A worker's view of the image while it runs, and its step count.
+    void snapshot(const QImage& image, qint64 steps, double progress);
+    /// A worker stopped: `completed` is false when it was cancelled.
+    void finished(bool completed);
+
+private:
+    void onWorkerDone(bool completed);
+    std::unique_ptr<SessionState> state_;
+    QThread* worker_ = nullptr;
+    std::atomic<bool> cancel_{false};
+    bool busy_ = false;
+};
+
+}  // namespace rcgui

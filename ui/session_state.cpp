@@ -1,0 +1,65 @@
+#include "session_state.h"
+
+#include <chrono>
+
+namespace rcgui {
+
+namespace {
+std::unique_ptr<rc::RenderSession> makeSession(const SessionConfig& c) {
+    return std::make_unique<rc::RenderSession>(c.scene, c.options);
+}
+}  // namespace
+
+SessionState::SessionState(SessionConfig config)
+    : config_(std::move(config)),
+      session_(makeSession(config_)),
+      camera_(config_.scene->camera, session_->width(), session_->height()),
+      recorder_(session_->width(), session_->height(), &session_->order()),
+      beams_(session_->width(), session_->height()) {
+    session_->addSink(&recorder_);
+    session_->addSink(&beams_);
+    sample();
+}
+
+SessionState::~SessionState() {
+    session_->removeSink(&recorder_);
+    session_->removeSink(&beams_);
+}
+
+void SessionState::sample() {
+    const rc::Counters& n = session_->counters();
+    recorder_.sample({session_->steps(), n.hits, n.misses, n.intersectionTests});
+}
+
+bool SessionState::step() {
+    const bool more = session_->step();
+    if (more) sample();
+    return more;
+}
+
+bool SessionState::runUntil(RunGoal goal, std::int64_t target, const std::atomic<bool>* cancel,
+                            const std::function<void()>& tick) {
+    using Clock = std::chrono::steady_clock;
+    auto nextTick = Clock::now() + std::chrono::milliseconds(50);
+    const int startPixel = recorder_.lastCommitted() ? recorder_.lastCommitted()->task.pixel : -1;
+    std::size_t eventsBefore = recorder_.events().size();
+    for (std::int64_t n = 0;; ++n) {
+        if (goal == RunGoal::ToStep && session_->steps() >= target) return true;
+        if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+        if (!step()) return true;
+        const auto& events = recorder_.events();
+        if (goal == RunGoal::NextMiss) {
+            for (std::size_t i = eventsBefore; i < events.size(); ++i)
+                if (events[i].deferred() || events[i].rayDecision() == rc::Decision::Miss) return true;
+            eventsBefore = events.size();
+        }
+        if (goal == RunGoal::NextPixel && recorder_.lastCommitted()->task.pixel != startPixel)
+            return true;
+        if (tick && (n & 255) == 0 && Clock::now() >= nextTick) {
+            tick();
+            nextTick = Clock::now() + std::chrono::milliseconds(50);
+        }
+    }
+}
+
+}  // namespace rcgui

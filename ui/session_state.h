@@ -1,0 +1,65 @@
+#pragma once
+/// \file
+/// \brief One render as the GUI sees it: the session, its recorder and its beam tree.
+#include <atomic>
+#include <functional>
+#include <memory>
+
+#include "analysis/beam_tree.h"
+#include "render/render_session.h"
+#include "scene/camera.h"
+#include "trace_recorder.h"
+
+namespace rcgui {
+
+/// What a render is made of: the scene and the options (cache, order, size).
+struct SessionConfig {
+    std::shared_ptr<const rc::Scene> scene;
+    rc::RenderOptions options;
+};
+
+/// How far a multi-step run goes.
+enum class RunGoal {
+    ToEnd,      ///< until the image is complete
+    ToStep,     ///< until session().steps() reaches a target
+    NextMiss,   ///< until a committed cache miss or a deferral (the cheap test failed)
+    NextPixel,  ///< until a ray of another pixel than the last one is traced
+};
+
+/// A render session with the sinks the GUI needs. Not thread-safe: exactly one thread
+/// may use it at a time (SessionController hands it to its worker and back).
+class SessionState {
+public:
+    explicit SessionState(SessionConfig config);
+    ~SessionState();
+    SessionState(const SessionState&) = delete;
+    SessionState& operator=(const SessionState&) = delete;
+
+    /// Traces exactly one ray (see rc::RenderSession::step). False when the image is done.
+    bool step();
+    /// Steps towards `goal` (`target` is the step count for RunGoal::ToStep) until it is
+    /// met, the image is done, or `cancel` becomes true. `tick` is called now and then
+    /// (about every 1/20 s). Returns true when the goal was met or the image completed.
+    bool runUntil(RunGoal goal, std::int64_t target, const std::atomic<bool>* cancel = nullptr,
+                  const std::function<void()>& tick = {});
+
+    const SessionConfig& config() const { return config_; }
+    const rc::Scene& scene() const { return *config_.scene; }
+    const rc::RenderSession& session() const { return *session_; }
+    const TraceRecorder& recorder() const { return recorder_; }
+    const rc::BeamTreeBuilder& beams() const { return beams_; }
+    /// The session's camera, to project world points to fractional pixel positions.
+    const rc::RayGenerator& camera() const { return camera_; }
+    int width() const { return session_->width(); }
+    int height() const { return session_->height(); }
+
+private:
+    void sample();
+    SessionConfig config_;
+    std::unique_ptr<rc::RenderSession> session_;
+    rc::RayGenerator camera_;
+    TraceRecorder recorder_;
+    rc::BeamTreeBuilder beams_;
+};
+
+}  // namespace rcgui

@@ -1,0 +1,65 @@
+#include "trace_recorder.h"
+
+#include <algorithm>
+
+namespace rcgui {
+
+TraceRecorder::TraceRecorder(int width, int height, const rc::RayOrder* order)
+    : width_(width), height_(height), order_(order) {
+    const std::size_t n = std::size_t(width) * height;
+    lastOfPixel_.assign(n, -1);
+    tests_.assign(n, 0);
+    hits_.assign(n, 0);
+    missCount_.assign(n, 0);
+    firstVisit_.assign(n, -1);
+    missReason_.assign(n, 0);
+}
+
+void TraceRecorder::onEvent(const rc::TraceEvent& e) {
+    const int p = e.task.pixel;
+    const int region = order_ ? int(order_->regions()) : 0;
+    events_.push_back(EventRecord::from(e, region, lastOfPixel_[p]));
+    const int index = int(events_.size()) - 1;
+    lastOfPixel_[p] = index;
+    tests_[p] += e.tests;
+    last_ = e;
+    if (e.deferred) {
+        misses_.push_back(index);
+        return;
+    }
+    lastCommitted_ = e;
+    if (firstVisit_[p] < 0) firstVisit_[p] = e.step;
+    if (e.lookup.decision == rc::Decision::Hit && hits_[p] < 0xFFFF) ++hits_[p];
+    if (e.lookup.decision == rc::Decision::Miss) {
+        misses_.push_back(index);
+        if (missCount_[p] < 0xFFFF) ++missCount_[p];
+        if (missReason_[p] == 0) missReason_[p] = std::uint8_t(e.lookup.reason);
+    }
+}
+
+std::vector<int> TraceRecorder::eventsOf(int pixel) const {
+    std::vector<int> out;
+    for (int i = lastOfPixel_[pixel]; i >= 0; i = events_[i].previous) out.push_back(i);
+    std::reverse(out.begin(), out.end());
+    return out;
+}
+
+int TraceRecorder::eventAt(int pixel, int node) const {
+    for (int i = lastOfPixel_[pixel]; i >= 0; i = events_[i].previous)
+        if (events_[i].node == node && !events_[i].deferred()) return i;
+    return -1;
+}
+
+void TraceRecorder::sample(const StatSample& s) {
+    if (!samples_.empty() && s.step - samples_.back().step < sampleEvery_) return;
+    samples_.push_back(s);
+    if (samples_.size() >= 2000) {
+        // Keep every other sample and sample half as often from now on
+        std::vector<StatSample> kept;
+        for (std::size_t i = 0; i < samples_.size(); i += 2) kept.push_back(samples_[i]);
+        samples_.swap(kept);
+        sampleEvery_ *= 2;
+    }
+}
+
+}  // namespace rcgui

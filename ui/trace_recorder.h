@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// \brief A trace sink that keeps every event and per-pixel tallies for the GUI.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "event_record.h"
+#include "order/ray_order.h"
+
+namespace rcgui {
+
+/// Counters sampled over time, for the statistics chart.
+struct StatSample {
+    std::int64_t step = 0;
+    std::uint64_t hits = 0;
+    std::uint64_t misses = 0;
+    std::uint64_t tests = 0;
+};
+
+/// Records every trace event of a session (compactly), the last full event, and per
+/// pixel: tests made, hits, misses, the step it was first visited and its last miss.
+class TraceRecorder final : public rc::TraceSink {
+public:
+    /// `order` is read for the breadth-first region of each event; it may be null.
+    TraceRecorder(int width, int height, const rc::RayOrder* order);
+    void onEvent(const rc::TraceEvent& e) override;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const std::vector<EventRecord>& events() const { return events_; }
+    /// Indices into events() of committed misses and of deferrals, in order.
+    const std::vector<std::int32_t>& misses() const { return misses_; }
+    /// The last event heard (committed or deferred), if any.
+    const std::optional<rc::TraceEvent>& lastEvent() const { return last_; }
+    /// The last committed event, if any.
+    const std::optional<rc::TraceEvent>& lastCommitted() const { return lastCommitted_; }
+    /// Index of the pixel's newest event, -1 if none; follow EventRecord::previous.
+    int lastEventOf(int pixel) const { return lastOfPixel_[pixel]; }
+    /// Every event of a pixel, oldest first.
+    std::vector<int> eventsOf(int pixel) const;
+    /// The committed event of `pixel` at path `node`, or -1.
+    int eventAt(int pixel, int node) const;
+
+    std::int32_t testsAt(int pixel) const { return tests_[pixel]; }
+    std::uint16_t hitsAt(int pixel) const { return hits_[pixel]; }
+    std::uint16_t missesAt(int pixel) const { return missCount_[pixel]; }
+    /// Step at which the pixel's first ray was traced, -1 if none.
+    std::int64_t firstVisit(int pixel) const { return firstVisit_[pixel]; }
+    /// Reason of the pixel's first committed miss (rc::MissReason::None if none).
+    rc::MissReason missReasonAt(int pixel) const { return rc::MissReason(missReason_[pixel]); }
+
+    /// Adds a chart sample; keeps at most about 2000 by thinning old ones.
+    void sample(const StatSample& s);
+    const std::vector<StatSample>& samples() const { return samples_; }
+
+private:
+    int width_, height_;
+    const rc::RayOrder* order_;
+    std::vector<EventRecord> events_;
+    std::vector<std::int32_t> misses_;
+    std::vector<std::int32_t> lastOfPixel_;
+    std::vector<std::int32_t> tests_;
+    std::vector<std::uint16_t> hits_, missCount_;
+    std::vector<std::int64_t> firstVisit_;
+    std::vector<std::uint8_t> missReason_;
+    std::optional<rc::TraceEvent> last_, lastCommitted_;
+    std::vector<StatSample> samples_;
+    std::int64_t sampleEvery_ = 1;
+};
+
+}  // namespace rcgui
