@@ -23,7 +23,7 @@ using Commands = std::vector<Command>;
 struct RenderFlags {
     int width = 0, height = 0, depth = 5, band = 16;
     double cutoff = 0.0;
-    std::string cache = "none", order = "scanline";
+    std::string cache = "none", order = "scanline", accel = "linear";
     std::uint64_t seed = 1986;
     bool verify = false;
     /// Adds --width --height --depth --cutoff --band --seed; with `cacheAndOrder` also

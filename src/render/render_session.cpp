@@ -19,8 +19,9 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
     : scene_(std::move(scene)),
       options_(resolved(*scene_, options)),
       camera_(scene_->camera, options_.width, options_.height),
-      search_(*scene_),
-      strategy_(makeStrategy(options_.cache, *scene_, search_)),
+      search_(makeCompleteSearch(options_.accel, *scene_)),
+      verifier_(*scene_),
+      strategy_(makeStrategy(options_.cache, *scene_, *search_)),
       image_(options_.width, options_.height) {
     order_ = makeOrder(options_.order, options_.width, options_.height, options_.band,
                        strategy_->caches(), [this](int pixel) {
@@ -70,9 +71,9 @@ bool RenderSession::step() {
             // A miss at a parent flushes the entries of its children
             if (order_->flushesChildren()) paths_.flushBelow(task.node);
         }
-        if (options_.verify && lookup.decision != Decision::Uncached) {
+        if (options_.verify && (lookup.decision != Decision::Uncached || options_.accel != AccelKind::Linear)) {
             Counters scratch;
-            if (!(search_.nearest(task.query, scratch) == lookup.answer)) ++counters_.verifyDisagreements;
+            if (!(verifier_.nearest(task.query, scratch) == lookup.answer)) ++counters_.verifyDisagreements;
         }
         // Shade: add to the pixel, spawn the children
         children_.clear();

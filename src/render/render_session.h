@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "order/ray_order.h"
+#include "search/accelerator.h"
 #include "search/cache_strategy.h"
 #include "trace/shading.h"
 #include "trace/trace_event.h"
@@ -19,6 +20,7 @@ struct RenderOptions {
     int width = 0;    ///< 0: the scene's own resolution
     int height = 0;
     CacheKind cache = CacheKind::None;
+    AccelKind accel = AccelKind::Linear;  ///< what answers complete searches
     OrderKind order = OrderKind::Scanline;
     ShadingOptions shading;
     int band = 16;        ///< scanlines per band in breadth-first and progressive orders (0: all)
@@ -65,7 +67,8 @@ private:
     std::shared_ptr<const Scene> scene_;
     RenderOptions options_;
     RayGenerator camera_;
-    LinearSearch search_;
+    std::unique_ptr<CompleteSearch> search_;
+    LinearSearch verifier_;  ///< --verify compares against the plain scan
     std::unique_ptr<CacheStrategy> strategy_;
     std::unique_ptr<RayOrder> order_;
     CacheTree paths_;

@@ -40,8 +40,8 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
 
 Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
     if (e.object < 0) {
-        // Nothing was hit: an empty cone around the last eye ray, else the cylinder
-        if (q.origin.object >= 0) return probeCylinder(q, e, n);
+        // Nothing was hit: the empty cone of directions around the last such ray, else the cylinder
+        if (e.coneAngle < 0.0) return probeCylinder(q, e, n);
         ++n.coneTests;
         if (angleBetween(q.ray.d, e.coneAxis) < e.coneAngle) return {true, {}, Decision::Hit};
         return {false, {}, Decision::Miss, MissReason::LeftCone};
@@ -53,8 +53,9 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
     if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
     // Then only the potential blockers between origin and target can come first
     Answer best{e.object, t};
-    for (int id : lists_.get(lists_.originSite(q.origin), e.object, n))
-        testObject(scene_, q, id, best, n);
+    const BlockerList& list = lists_.get(lists_.originSite(q.origin), e.object, n);
+    for (std::size_t i = 0; i < list.ids.size() && list.reach[i] <= best.t; ++i)
+        testObject(scene_, q, list.ids[i], best, n);
     if (best.object != e.object) return {true, best, Decision::Miss, MissReason::BlockerHit};
     return {true, best, Decision::Hit};
     // [blocker-probe]
@@ -64,8 +65,9 @@ Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why,
     // [blocker-shadow]
     // Every object that can stand between a surface and its light meets their hull
     Answer best;
-    for (int id : lists_.get(lists_.originSite(q.origin), lists_.lightSite(q.light), n))
-        testObject(scene_, q, id, best, n);
+    const BlockerList& list = lists_.get(lists_.originSite(q.origin), lists_.lightSite(q.light), n);
+    for (std::size_t i = 0; i < list.ids.size() && list.reach[i] <= std::min(best.t, q.tmax); ++i)
+        testObject(scene_, q, list.ids[i], best, n);
     if (why != MissReason::None) return {true, best, Decision::Miss, why};
     if (best.object == e.object) return {true, best, Decision::Hit};
     return {true, best, Decision::Miss,
@@ -87,20 +89,25 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
         lists_.get(e.blockerOrigin, e.blockerTarget, n);
     } else {
         e.blockerTarget = -1;
-        if (q.origin.object < 0) buildCone(q, e, n);
-        else buildCylinder(q, a, e, n);
+        buildCone(q, e, n);
+        if (e.coneAngle < 0.0) buildCylinder(q, a, e, n);
     }
 }
 
 void BlockerCache::buildCone(const Query& q, CacheEntry& e, Counters& n) const {
     // [empty-cone]
-    // The widest cone around this empty eye ray that no sphere's silhouette enters
+    // Rays leave from anywhere in the origin's sphere (a point for the eye): direction d
+    // misses sphere j if its angle to c_j exceeds asin((r_j + r_origin) / distance)
+    const Sphere from = lists_.siteSphere(lists_.originSite(q.origin));
+    const double reach = from.r + slack_;
     double angle = kNoHit;
-    for (const Object& o : scene_.objects) {
-        const Vec3 v = o.bound.c - q.ray.o;
+    for (int id = 0; id < scene_.size(); ++id) {
+        if (id == q.origin.object) continue;  // a ray leaving an object cannot meet it again
+        const Sphere& s = scene_.objects[id].bound;
+        const Vec3 v = s.c - from.c;
         const double dist = glm::length(v);
-        if (dist <= o.bound.r) { angle = -1.0; break; }  // the eye is inside: no cone
-        angle = std::min(angle, angleBetween(q.ray.d, v) - std::asin(o.bound.r / dist));
+        if (dist <= s.r + reach) { angle = -1.0; break; }  // touching the origin: no cone
+        angle = std::min(angle, angleBetween(q.ray.d, v) - std::asin((s.r + reach) / dist));
     }
     e.coneAxis = q.ray.d;
     e.coneAngle = angle - 1e-9;

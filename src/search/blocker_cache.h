@@ -9,8 +9,10 @@ namespace rc {
 /// hits that object and none of the potential blockers between its origin and that
 /// object. All misses mean a new object was met. Shadow rays are answered from the list
 /// of the hull of their origin and their light, which holds every object that could
-/// stand in the way, so they never need a complete search. Rays that hit nothing use the
-/// cylinder of safety, and eye rays that hit nothing an empty cone around the last one.
+/// stand in the way, so they never need a complete search. Rays that hit nothing keep the
+/// cone of directions around the last such ray that no object's silhouette enters, seen
+/// from anywhere in the origin's sphere (the eye is a sphere of radius 0); where another
+/// object touches the origin there is no such cone and the cylinder of safety is used.
 class BlockerCache final : public CacheStrategy {
 public:
     BlockerCache(const Scene& scene, const CompleteSearch& search);

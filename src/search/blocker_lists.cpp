@@ -24,26 +24,34 @@ Sphere BlockerLists::siteSphere(int site) const {
 
 const std::vector<int>* BlockerLists::find(int origin, int target) const {
     auto it = lists_.find(key(origin, target));
-    return it == lists_.end() ? nullptr : &it->second;
+    return it == lists_.end() ? nullptr : &it->second.ids;
 }
 
-const std::vector<int>& BlockerLists::get(int origin, int target, Counters& n) {
+const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     auto [it, fresh] = lists_.try_emplace(key(origin, target));
     if (!fresh) return it->second;
     // [build-blocker-list]
     // Every object whose bounding sphere meets the hull of origin and target may block
     const Sphere a = siteSphere(origin);
     const Sphere b = siteSphere(target);
-    std::vector<int>& list = it->second;
+    std::vector<std::pair<double, int>> found;
     for (int id = 0; id < scene_.size(); ++id) {
         if (id == target) continue;
         ++n.hullTests;
-        if (meetsHull(scene_.objects[id].bound, a, b, slack_)) list.push_back(id);
+        const Sphere& s = scene_.objects[id].bound;
+        if (meetsHull(s, a, b, slack_)) found.emplace_back(glm::length(s.c - a.c) - s.r - a.r - slack_, id);
     }
     // [build-blocker-list]
+    // Nearest first, so a lookup can stop early
+    std::sort(found.begin(), found.end());
+    BlockerList& list = it->second;
+    for (const auto& [reach, id] : found) {
+        list.reach.push_back(reach);
+        list.ids.push_back(id);
+    }
     ++n.blockerListsBuilt;
-    n.blockerListEntries += list.size();
-    n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.size());
+    n.blockerListEntries += list.ids.size();
+    n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());
     return list;
 }
 

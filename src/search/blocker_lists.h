@@ -15,6 +15,14 @@
 
 namespace rc {
 
+/// One list: the potential blockers, nearest first, and for each the least distance a ray
+/// leaving the origin site must travel to reach it: once a hit nearer than that is known,
+/// the rest of the list cannot come first (a pruning the paper does not describe).
+struct BlockerList {
+    std::vector<int> ids;
+    std::vector<double> reach;  ///< |c_j - c_origin| - r_j - r_origin, ascending
+};
+
 /// Lists of potential blockers keyed by (origin site, target site). A site is an object
 /// id, the eye (`eyeSite()`), or a light (`lightSite(k)`), each a sphere: a point is a
 /// sphere of radius 0.
@@ -33,7 +41,7 @@ public:
 
     /// Every object whose bounding sphere meets the hull of the two sites, the target
     /// excepted; built on first use and counted in `n`.
-    const std::vector<int>& get(int origin, int target, Counters& n);
+    const BlockerList& get(int origin, int target, Counters& n);
     /// The list if it was built, else nullptr.
     const std::vector<int>* find(int origin, int target) const;
     std::size_t size() const { return lists_.size(); }
@@ -45,7 +53,7 @@ private:
     const Scene& scene_;
     int sites_;
     double slack_;
-    std::unordered_map<std::uint64_t, std::vector<int>> lists_;
+    std::unordered_map<std::uint64_t, BlockerList> lists_;
 };
 
 }  // namespace rc

@@ -1,0 +1,151 @@
+#include "search/uniform_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace rc {
+
+UniformGrid::UniformGrid(const Scene& scene, double density) : scene_(scene), mailbox_(scene.size(), 0) {
+    if (scene.size() == 0) {
+        cellStart_.assign(2, 0);
+        return;
+    }
+    lo_ = Vec3(kNoHit);
+    hi_ = Vec3(-kNoHit);
+    for (const Object& o : scene.objects) {
+        lo_ = glm::min(lo_, o.bound.c - Vec3(o.bound.r));
+        hi_ = glm::max(hi_, o.bound.c + Vec3(o.bound.r));
+    }
+    // Widen by a hair so rounding in the walk never loses an object at a cell boundary
+    const Vec3 ext = hi_ - lo_;
+    const double pad = 1e-9 * (glm::length(ext) + glm::length(lo_) + glm::length(hi_)) + 1e-300;
+    lo_ -= Vec3(pad);
+    hi_ += Vec3(pad);
+    const Vec3 size = hi_ - lo_;
+    const double volume = std::max(size.x * size.y * size.z, 1e-300);
+    const double cellsWanted = std::max(1.0, density * scene.size());
+    const double side = std::cbrt(volume / cellsWanted);
+    for (int a = 0; a < 3; ++a) res_[a] = std::clamp(int(std::ceil(size[a] / side)), 1, 128);
+    cellSize_ = size / Vec3(res_[0], res_[1], res_[2]);
+
+    // Count, then fill (compressed rows)
+    const int cells = res_[0] * res_[1] * res_[2];
+    std::vector<std::uint32_t> count(cells + 1, 0);
+    auto range = [&](const Object& o, std::array<int, 3>& a, std::array<int, 3>& b) {
+        const Vec3 olo = (o.bound.c - Vec3(o.bound.r + pad) - lo_) / cellSize_;
+        const Vec3 ohi = (o.bound.c + Vec3(o.bound.r + pad) - lo_) / cellSize_;
+        for (int k = 0; k < 3; ++k) {
+            a[k] = std::clamp(int(std::floor(olo[k])), 0, res_[k] - 1);
+            b[k] = std::clamp(int(std::floor(ohi[k])), 0, res_[k] - 1);
+        }
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int id = 0; id < scene.size(); ++id) {
+            std::array<int, 3> a, b;
+            range(scene.objects[id], a, b);
+            for (int z = a[2]; z <= b[2]; ++z)
+                for (int y = a[1]; y <= b[1]; ++y)
+                    for (int x = a[0]; x <= b[0]; ++x) {
+                        const int c = cellIndex(x, y, z);
+                        if (pass == 0) ++count[c + 1];
+                        else ids_[cellStart_[c] + count[c]++] = id;
+                    }
+        }
+        if (pass == 0) {
+            for (int c = 0; c < cells; ++c) count[c + 1] += count[c];
+            cellStart_ = count;
+            ids_.resize(cellStart_[cells]);
+            std::fill(count.begin(), count.end(), 0);
+        }
+    }
+}
+
+std::vector<int> UniformGrid::objectsInBox(const Vec3& lo, const Vec3& hi) const {
+    std::vector<int> out;
+    if (ids_.empty()) return out;
+    std::array<int, 3> a, b;
+    for (int k = 0; k < 3; ++k) {
+        a[k] = std::clamp(int(std::floor((lo[k] - lo_[k]) / cellSize_[k])), 0, res_[k] - 1);
+        b[k] = std::clamp(int(std::floor((hi[k] - lo_[k]) / cellSize_[k])), 0, res_[k] - 1);
+    }
+    for (int z = a[2]; z <= b[2]; ++z)
+        for (int y = a[1]; y <= b[1]; ++y)
+            for (int x = a[0]; x <= b[0]; ++x) {
+                const int c = cellIndex(x, y, z);
+                out.insert(out.end(), ids_.begin() + cellStart_[c], ids_.begin() + cellStart_[c + 1]);
+            }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+Answer UniformGrid::nearest(const Query& q, Counters& n) const {
+    Answer best;
+    if (ids_.empty()) return best;
+    if (++stamp_ == 0) {  // wrapped: forget every mark
+        std::fill(mailbox_.begin(), mailbox_.end(), 0);
+        stamp_ = 1;
+    }
+    // [grid-walk]
+    // Clip the ray to the grid's box (slab test)
+    const Ray& r = q.ray;
+    double t0 = 0.0, t1 = q.tmax;
+    for (int k = 0; k < 3; ++k) {
+        if (r.d[k] == 0.0) {
+            if (r.o[k] < lo_[k] || r.o[k] > hi_[k]) return best;
+            continue;
+        }
+        double a = (lo_[k] - r.o[k]) / r.d[k], b = (hi_[k] - r.o[k]) / r.d[k];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+    }
+    if (!(t0 <= t1)) return best;
+    // The first cell, and how far to each next cell boundary (Amanatides and Woo)
+    const Vec3 p = r.at(t0);
+    int cell[3], step[3], stop[3];
+    double next[3], delta[3];
+    for (int k = 0; k < 3; ++k) {
+        cell[k] = std::clamp(int(std::floor((p[k] - lo_[k]) / cellSize_[k])), 0, res_[k] - 1);
+        if (r.d[k] > 0.0) {
+            step[k] = 1;
+            stop[k] = res_[k];
+            next[k] = (lo_[k] + (cell[k] + 1) * cellSize_[k] - r.o[k]) / r.d[k];
+            delta[k] = cellSize_[k] / r.d[k];
+        } else if (r.d[k] < 0.0) {
+            step[k] = -1;
+            stop[k] = -1;
+            next[k] = (lo_[k] + cell[k] * cellSize_[k] - r.o[k]) / r.d[k];
+            delta[k] = -cellSize_[k] / r.d[k];
+        } else {
+            step[k] = 0;
+            stop[k] = -2;
+            next[k] = kNoHit;
+            delta[k] = kNoHit;
+        }
+    }
+    for (;;) {
+        // Test the cell's objects, each once per ray
+        const int c = cellIndex(cell[0], cell[1], cell[2]);
+        for (std::uint32_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
+            const int id = ids_[i];
+            if (mailbox_[id] == stamp_) continue;
+            mailbox_[id] = stamp_;
+            testObject(scene_, q, id, best, n);
+        }
+        // A hit before this cell's exit is final (a hair of margin keeps ties exact)
+        const int k = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
+        const double exit = next[k];
+        if (best.t < exit * (1.0 - 1e-12) - 1e-300 || exit > t1) break;
+        cell[k] += step[k];
+        if (cell[k] == stop[k]) break;
+        next[k] += delta[k];
+    }
+    // [grid-walk]
+    return best;
+}
+
+}  // namespace rc
