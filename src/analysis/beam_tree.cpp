@@ -24,6 +24,16 @@ void BeamTreeBuilder::record(int path, int pixel, int originObject, bool inside,
     ++rays_;
 }
 
+void BeamTreeBuilder::merge(const BeamTreeBuilder& other, const std::vector<int>& pathMap) {
+    for (const auto& [path, keys] : other.keys_) {
+        auto [it, fresh] = keys_.try_emplace(pathMap.at(path));
+        if (fresh) it->second.assign(keys.size(), kAbsent);
+        for (std::size_t p = 0; p < keys.size(); ++p)
+            if (keys[p] != kAbsent) it->second[p] = keys[p];
+    }
+    rays_ += other.rays_;
+}
+
 std::vector<int> BeamTreeBuilder::paths() const {
     std::vector<int> p;
     for (const auto& [path, _] : keys_) p.push_back(path);

@@ -30,6 +30,9 @@ public:
     /// Records one ray directly (for hand-made images in tests).
     void record(int path, int pixel, int originObject, bool inside, int hitObject);
     BeamTreeStats build() const;
+    /// Takes in the rays another builder of the same size recorded (other pixels);
+    /// `pathMap[i]` is this builder's path id for the other's path `i`.
+    void merge(const BeamTreeBuilder& other, const std::vector<int>& pathMap);
     /// Beam label of every pixel at one path (-1: no ray there); labels count from 0.
     std::vector<int> labels(int path) const;
     std::vector<int> paths() const;

@@ -10,6 +10,7 @@
 
 #include "analysis/beam_tree.h"
 #include "render/output_files.h"
+#include "render/parallel_render.h"
 #include "render/report.h"
 #include "scene/builtin_scenes.h"
 
@@ -56,38 +57,28 @@ RenderOptions RenderFlags::options() const {
     return o;
 }
 
-void addRenderCommand(CLI::App& app, Commands& out) {
-    struct State {
-        std::string scene, out, stats;
-        bool quiet = false;
-        RenderFlags flags;
-    };
-    auto st = std::make_shared<State>();
-    CLI::App* c = app.add_subcommand("render", "render a scene to PNG and report what it took");
-    c->add_option("scene", st->scene, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
-        ->required();
-    c->add_option("-o,--output", st->out, "PNG file to write");
-    c->add_option("--stats", st->stats, "statistics JSON file to write");
-    c->add_flag("--verify", st->flags.verify, "run the complete search beside every cached answer");
-    c->add_flag("-q,--quiet", st->quiet, "no progress line or summary");
-    st->flags.addTo(c, true);
-    out.push_back({c, [st] {
-        const std::string& scene_ = st->scene;
-        const std::string& out_ = st->out;
-        const std::string& stats_ = st->stats;
-        const bool quiet_ = st->quiet;
-        const RenderFlags& flags_ = st->flags;
-    auto scene = std::make_shared<const Scene>(loadScene(scene_, flags_.seed));
-    RenderSession session(scene, flags_.options());
-    BeamTreeBuilder beams(session.width(), session.height());
-    if (!stats_.empty()) session.addSink(&beams);
+namespace {
+struct RenderArgs {
+    std::string scene, out, stats;
+    bool quiet = false;
+    int threads = 1;
+    RenderFlags flags;
+};
+
+int renderCommand(const RenderArgs& a) {
+    auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
+    RenderOptions options = a.flags.options();
+    if (options.width <= 0) options.width = scene->camera.width;
+    if (options.height <= 0) options.height = scene->camera.height;
+    BeamTreeBuilder beams(options.width, options.height);
 
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     bool shown = false;
-    session.run([&](double done) {
+    const ParallelRun run = renderParallel(scene, options, a.threads, a.stats.empty() ? nullptr : &beams,
+                                           [&](double done) {
         const double s = std::chrono::duration<double>(Clock::now() - start).count();
-        if (!quiet_ && s > 1.0) {
+        if (!a.quiet && s > 1.0) {
             std::fprintf(stderr, "\rrendering %s: %5.1f%%  %6.1f s", scene->name.c_str(), 100.0 * done, s);
             shown = true;
         }
@@ -96,23 +87,41 @@ void addRenderCommand(CLI::App& app, Commands& out) {
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (shown) std::fprintf(stderr, "\n");
 
-    if (!out_.empty()) writePng(out_, session.width(), session.height(), session.image().rgb8());
-    const Counters& n = session.counters();
-    if (!stats_.empty()) {
+    if (!a.out.empty()) writePng(a.out, options.width, options.height, run.image.rgb8());
+    const Counters& n = run.counters;
+    if (!a.stats.empty()) {
         const BeamTreeStats b = beams.build();
-        writeTextFile(stats_, statsJson(session, seconds, &b).dump(2) + "\n");
+        const RenderSummary summary{scene->name, options, n, run.queuePeak, run.regions, run.paths, run.threads};
+        writeTextFile(a.stats, statsJson(summary, seconds, &b).dump(2) + "\n");
     }
-    if (!quiet_) {
-        std::printf("%s %dx%d cache=%s order=%s: %.3f s, %llu rays, %llu intersection tests, "
-                    "%llu complete searches, %llu hits, %llu misses%s\n",
-                    scene->name.c_str(), session.width(), session.height(), flags_.cache.c_str(),
-                    flags_.order.c_str(), seconds, (unsigned long long)n.totalRays(),
-                    (unsigned long long)n.intersectionTests, (unsigned long long)n.completeSearches,
-                    (unsigned long long)n.hits, (unsigned long long)n.misses,
-                    flags_.verify ? (", " + std::to_string(n.verifyDisagreements) + " disagreements").c_str() : "");
+    if (!a.quiet) {
+        std::printf("%s %dx%d cache=%s order=%s accel=%s threads=%d: %.3f s, %llu rays, %llu intersection tests, "
+                    "%llu complete searches, %llu hits, %llu misses",
+                    scene->name.c_str(), options.width, options.height, a.flags.cache.c_str(),
+                    a.flags.order.c_str(), a.flags.accel.c_str(), run.threads, seconds,
+                    (unsigned long long)n.totalRays(), (unsigned long long)n.intersectionTests,
+                    (unsigned long long)n.completeSearches, (unsigned long long)n.hits,
+                    (unsigned long long)n.misses);
+        if (a.flags.verify) std::printf(", %llu disagreements", (unsigned long long)n.verifyDisagreements);
+        std::printf("\n");
     }
-    return flags_.verify && n.verifyDisagreements > 0 ? 1 : 0;
-    }});
+    return a.flags.verify && n.verifyDisagreements > 0 ? 1 : 0;
+}
+}  // namespace
+
+void addRenderCommand(CLI::App& app, Commands& out) {
+    auto a = std::make_shared<RenderArgs>();
+    CLI::App* c = app.add_subcommand("render", "render a scene to PNG and report what it took");
+    c->add_option("scene", a->scene, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
+        ->required();
+    c->add_option("-o,--output", a->out, "PNG file to write");
+    c->add_option("--stats", a->stats, "statistics JSON file to write");
+    c->add_flag("--verify", a->flags.verify, "run the complete search beside every cached answer");
+    c->add_flag("-q,--quiet", a->quiet, "no progress line or summary");
+    c->add_option("--threads", a->threads, "threads, each with its own cache tree (0: one per core)")
+        ->check(CLI::Range(0, 256))->capture_default_str();
+    a->flags.addTo(c, true);
+    out.push_back({c, [a] { return renderCommand(*a); }});
 }
 
 void addInfoCommand(CLI::App& app, Commands& out) {

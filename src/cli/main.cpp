@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
     rc::cli::addInfoCommand(app, commands);
     rc::cli::addScenesCommand(app, commands);
     rc::cli::addTable1Command(app, commands);
+    rc::cli::addStabilityCommand(app, commands);
+    rc::cli::addConvergenceCommand(app, commands);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -3,6 +3,8 @@
 /// \brief A ray: an origin and a unit direction.
 #include <glm/vec3.hpp>
 
+/// The Qt-free core of RayCache: geometry, scenes, the complete search and the caches,
+/// the tracer, the orders and the analysis (see the pages of this site, one per idea).
 namespace rc {
 
 using Vec3 = glm::dvec3;

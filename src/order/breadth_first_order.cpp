@@ -4,9 +4,10 @@
 
 namespace rc {
 
-BreadthFirstOrder::BreadthFirstOrder(int width, int height, int band, bool cheapTests, EyeMaker makeEye)
-    : width_(width), height_(height), band_(band > 0 ? std::min(band, height) : height),
-      cheapTests_(cheapTests), makeEye_(std::move(makeEye)) {}
+BreadthFirstOrder::BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, bool cheapTests,
+                                     EyeMaker makeEye)
+    : width_(width), height_(rowEnd), band_(band > 0 ? std::min(band, rowEnd - rowBegin) : rowEnd - rowBegin),
+      cheapTests_(cheapTests), makeEye_(std::move(makeEye)), nextRow_(rowBegin) {}
 
 bool BreadthFirstOrder::beginPath() {
     if (pathIndex_ < generation_.size()) ++pathIndex_;

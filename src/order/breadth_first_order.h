@@ -22,7 +22,8 @@ namespace rc {
 /// cheaply are deferred and seed later regions, once the current one is finished.
 class BreadthFirstOrder final : public RayOrder {
 public:
-    BreadthFirstOrder(int width, int height, int band, bool cheapTests, EyeMaker makeEye);
+    /// Scanlines [rowBegin, rowEnd), `band` at a time (0: all).
+    BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, bool cheapTests, EyeMaker makeEye);
     OrderKind kind() const override { return OrderKind::BreadthFirst; }
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
@@ -42,7 +43,7 @@ private:
     bool cheapTests_;
     EyeMaker makeEye_;
     int bandRow_ = 0;   ///< first scanline of the current band
-    int nextRow_ = 0;   ///< first scanline of the next band
+    int nextRow_;       ///< first scanline of the next band
     // Rays of the current generation by path, the path being filled, and the next generation
     std::vector<std::pair<int, std::vector<RayTask>>> generation_;
     std::size_t pathIndex_ = 0;

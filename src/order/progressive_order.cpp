@@ -4,8 +4,9 @@
 
 namespace rc {
 
-ProgressiveOrder::ProgressiveOrder(int width, int height, int band, EyeMaker makeEye)
-    : width_(width), height_(height), band_(band > 0 ? band : height), makeEye_(std::move(makeEye)) {}
+ProgressiveOrder::ProgressiveOrder(int width, int rowBegin, int rowEnd, int band, EyeMaker makeEye)
+    : width_(width), height_(rowEnd), band_(band > 0 ? band : rowEnd - rowBegin), nextRow_(rowBegin),
+      makeEye_(std::move(makeEye)) {}
 
 std::optional<Pick> ProgressiveOrder::next() {
     if (queue_.empty()) {

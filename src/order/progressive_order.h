@@ -12,7 +12,8 @@ namespace rc {
 /// and greater depth" (Hanrahan 1986). A FIFO over the ray trees of a band of scanlines.
 class ProgressiveOrder final : public RayOrder {
 public:
-    ProgressiveOrder(int width, int height, int band, EyeMaker makeEye);
+    /// Scanlines [rowBegin, rowEnd), `band` at a time (0: all).
+    ProgressiveOrder(int width, int rowBegin, int rowEnd, int band, EyeMaker makeEye);
     OrderKind kind() const override { return OrderKind::Progressive; }
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
@@ -20,7 +21,7 @@ public:
 
 private:
     int width_, height_, band_;
-    int nextRow_ = 0;
+    int nextRow_;
     EyeMaker makeEye_;
     std::deque<RayTask> queue_;
     std::size_t peak_ = 0;

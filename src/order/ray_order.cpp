@@ -21,14 +21,16 @@ std::optional<OrderKind> parseOrderKind(std::string_view s) {
     return std::nullopt;
 }
 
-std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int height, int band,
+std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int rowBegin, int rowEnd, int band,
                                     bool cheapTests, RayOrder::EyeMaker makeEye) {
     switch (kind) {
-        case OrderKind::Scanline: return std::make_unique<ScanlineOrder>(width * height, std::move(makeEye));
+        case OrderKind::Scanline:
+            return std::make_unique<ScanlineOrder>(width * rowBegin, width * rowEnd, std::move(makeEye));
         case OrderKind::Progressive:
-            return std::make_unique<ProgressiveOrder>(width, height, band, std::move(makeEye));
+            return std::make_unique<ProgressiveOrder>(width, rowBegin, rowEnd, band, std::move(makeEye));
         case OrderKind::BreadthFirst:
-            return std::make_unique<BreadthFirstOrder>(width, height, band, cheapTests, std::move(makeEye));
+            return std::make_unique<BreadthFirstOrder>(width, rowBegin, rowEnd, band, cheapTests,
+                                                       std::move(makeEye));
     }
     return nullptr;
 }

@@ -59,10 +59,11 @@ public:
     virtual FrontierView frontier() const { return {}; }
 };
 
-/// Makes an order for an image. `band` is the number of scanlines breadth-first and
-/// progressive orders work on at a time (0: the whole image). `cheapTests`: whether
-/// the cache can answer cheaply (false with no cache: every ray then extends the fill).
-std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int height, int band,
+/// Makes an order for the scanlines [rowBegin, rowEnd) of an image `width` wide. `band` is
+/// the number of scanlines breadth-first and progressive orders work on at a time (0: all).
+/// `cheapTests`: whether the cache can answer cheaply (false with no cache: every ray then
+/// extends the fill).
+std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int rowBegin, int rowEnd, int band,
                                     bool cheapTests, RayOrder::EyeMaker makeEye);
 
 }  // namespace rc

@@ -9,7 +9,9 @@ namespace rc {
 /// first (a stack), the way a recursive tracer visits it.
 class ScanlineOrder final : public RayOrder {
 public:
-    ScanlineOrder(int pixels, EyeMaker makeEye) : pixels_(pixels), makeEye_(std::move(makeEye)) {}
+    /// Pixels [first, end) in order.
+    ScanlineOrder(int first, int end, EyeMaker makeEye)
+        : pixels_(end), nextPixel_(first), makeEye_(std::move(makeEye)) {}
     OrderKind kind() const override { return OrderKind::Scanline; }
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
@@ -18,7 +20,7 @@ public:
 
 private:
     int pixels_;
-    int nextPixel_ = 0;
+    int nextPixel_;
     EyeMaker makeEye_;
     std::vector<RayTask> stack_;
     std::size_t peak_ = 0;

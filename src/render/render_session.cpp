@@ -11,6 +11,9 @@ RenderOptions resolved(const Scene& scene, RenderOptions o) {
     if (o.height <= 0) o.height = scene.camera.height;
     if (o.width <= 0 || o.height <= 0) throw std::invalid_argument("image size must be positive");
     if (o.shading.maxDepth < 1) throw std::invalid_argument("depth must be at least 1");
+    if (o.rowEnd <= 0) o.rowEnd = o.height;
+    if (o.rowBegin < 0 || o.rowBegin >= o.rowEnd || o.rowEnd > o.height)
+        throw std::invalid_argument("rows must lie within the image and not be empty");
     return o;
 }
 }  // namespace
@@ -23,7 +26,7 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
       verifier_(*scene_),
       strategy_(makeStrategy(options_.cache, *scene_, *search_)),
       image_(options_.width, options_.height) {
-    order_ = makeOrder(options_.order, options_.width, options_.height, options_.band,
+    order_ = makeOrder(options_.order, options_.width, options_.rowBegin, options_.rowEnd, options_.band,
                        strategy_->caches(), [this](int pixel) {
                            ++primaries_;
                            return primaryTask(primaryRay(pixel), pixel);
@@ -33,12 +36,13 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
 RenderSession::~RenderSession() = default;
 
 Ray RenderSession::primaryRay(int pixel) const {
-    return camera_.primary(pixel % options_.width, pixel / options_.width);
+    return camera_.primary(pixel % options_.width + options_.pixelOffset.x,
+                           pixel / options_.width + options_.pixelOffset.y);
 }
 
 double RenderSession::progress() const {
     if (done_) return 1.0;
-    return double(primaries_) / (double(options_.width) * options_.height);
+    return double(primaries_) / (double(options_.width) * (options_.rowEnd - options_.rowBegin));
 }
 
 void RenderSession::removeSink(TraceSink* sink) {

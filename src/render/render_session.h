@@ -7,6 +7,8 @@
 #include <memory>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "order/ray_order.h"
 #include "search/accelerator.h"
 #include "search/cache_strategy.h"
@@ -25,6 +27,13 @@ struct RenderOptions {
     ShadingOptions shading;
     int band = 16;        ///< scanlines per band in breadth-first and progressive orders (0: all)
     bool verify = false;  ///< run the complete search beside every cached answer
+    /// Trace only scanlines [rowBegin, rowEnd) (rowEnd 0: to the bottom). Parallel renders
+    /// give each thread its own rows; the image keeps its full size.
+    int rowBegin = 0;
+    int rowEnd = 0;
+    /// Added to every pixel's position before its eye ray is made: supersampling jitter,
+    /// in pixels. (0, 0), the default, leaves every eye ray as it is.
+    glm::dvec2 pixelOffset{0.0, 0.0};
 };
 
 /// A render in progress. `step()` traces exactly one ray: the order picks it, the cache

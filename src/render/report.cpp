@@ -29,26 +29,33 @@ nlohmann::json countersJson(const Counters& n) {
     return j;
 }
 
-nlohmann::json statsJson(const RenderSession& s, double seconds, const BeamTreeStats* beams) {
-    nlohmann::json j = countersJson(s.counters());
-    j["scene"] = s.scene().name;
-    j["width"] = s.width();
-    j["height"] = s.height();
-    j["cache"]["strategy"] = std::string(toString(s.options().cache));
-    j["order"] = std::string(toString(s.options().order));
+RenderSummary summarize(const RenderSession& s) {
+    return {s.scene().name, s.options(), s.counters(), s.order().queuePeak(), s.order().regions(),
+            s.cacheTree().size(), 1};
+}
+
+nlohmann::json statsJson(const RenderSummary& s, double seconds, const BeamTreeStats* beams) {
+    nlohmann::json j = countersJson(s.counters);
+    j["scene"] = s.scene;
+    j["width"] = s.options.width;
+    j["height"] = s.options.height;
+    j["cache"]["strategy"] = std::string(toString(s.options.cache));
+    j["order"] = std::string(toString(s.options.order));
+    j["accel"] = std::string(toString(s.options.accel));
+    j["threads"] = s.threads;
     j["seconds"] = seconds;
-    j["depth"] = s.options().shading.maxDepth;
-    j["cutoff"] = s.options().shading.cutoff;
-    j["queue_peak"] = s.order().queuePeak();
-    j["regions"] = s.order().regions();
-    j["band"] = s.options().band;
-    j["ray_tree_paths"] = s.cacheTree().size();
+    j["depth"] = s.options.shading.maxDepth;
+    j["cutoff"] = s.options.shading.cutoff;
+    j["queue_peak"] = s.queuePeak;
+    j["regions"] = s.regions;
+    j["band"] = s.options.band;
+    j["ray_tree_paths"] = s.paths;
     if (beams) {
         j["beam_tree"] = {{"nodes", beams->nodes},
                           {"average_ray_tree_size", beams->averageRayTreeSize},
                           {"coherence", beams->coherence}};
         j["complete_searches_per_beam"] =
-            beams->nodes ? double(s.counters().completeSearches) / double(beams->nodes) : 0.0;
+            beams->nodes ? double(s.counters.completeSearches) / double(beams->nodes) : 0.0;
     }
     return j;
 }

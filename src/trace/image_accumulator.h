@@ -19,13 +19,22 @@ public:
     ImageAccumulator(int width = 0, int height = 0)
         : width_(width), height_(height), sum_(std::size_t(width) * height * 3, 0) {}
 
+    // [accumulate]
+    /// Adds a contribution to a pixel, rounded to a multiple of 2^-32.
     void add(int pixel, const Vec3& c) {
         for (int k = 0; k < 3; ++k)
             sum_[std::size_t(pixel) * 3 + k] += std::int64_t(std::llround(c[k] * kScale));
     }
+    /// The pixel's sum so far.
     Vec3 value(int pixel) const {
         const std::int64_t* p = &sum_[std::size_t(pixel) * 3];
         return Vec3(double(p[0]), double(p[1]), double(p[2])) / kScale;
+    }
+    // [accumulate]
+    /// Adds another image of the same size, pixel by pixel.
+    ImageAccumulator& operator+=(const ImageAccumulator& o) {
+        for (std::size_t i = 0; i < sum_.size() && i < o.sum_.size(); ++i) sum_[i] += o.sum_[i];
+        return *this;
     }
     /// The 8-bit RGB image, clamped to [0, 1].
     std::vector<std::uint8_t> rgb8() const;

@@ -1,0 +1,84 @@
+#include "render/parallel_render.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+namespace rc {
+
+ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptions& options, int threads,
+                           BeamTreeBuilder* beams, const std::function<bool(double)>& progress) {
+    // The full image size, resolved the way a session resolves it
+    RenderOptions base = options;
+    if (base.width <= 0) base.width = scene->camera.width;
+    if (base.height <= 0) base.height = scene->camera.height;
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = std::clamp(threads, 1, base.height);
+
+    // [parallel-split]
+    // One session per thread over its own block of scanlines: own cache tree, own lists
+    std::vector<std::unique_ptr<RenderSession>> sessions;
+    std::vector<std::unique_ptr<BeamTreeBuilder>> builders;
+    for (int k = 0; k < threads; ++k) {
+        RenderOptions o = base;
+        o.rowBegin = base.height * k / threads;
+        o.rowEnd = base.height * (k + 1) / threads;
+        sessions.push_back(std::make_unique<RenderSession>(scene, o));
+        if (beams) {
+            builders.push_back(std::make_unique<BeamTreeBuilder>(base.width, base.height));
+            sessions.back()->addSink(builders.back().get());
+        }
+    }
+    std::atomic<bool> cancel{false};
+    std::atomic<int> running{threads};
+    std::vector<std::thread> pool;
+    for (int k = 0; k < threads; ++k) {
+        pool.emplace_back([&, k] {
+            RenderSession& s = *sessions[k];
+            while (!cancel.load(std::memory_order_relaxed)) {
+                int n = 0;
+                while (n < 4096 && s.step()) ++n;
+                if (s.done()) break;
+            }
+            --running;
+        });
+    }
+    // [parallel-split]
+    while (running.load() > 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (progress) {
+            double done = 0.0;
+            for (const auto& s : sessions) done += s->progress();
+            if (!progress(done / threads)) cancel = true;
+        }
+    }
+    for (std::thread& t : pool) t.join();
+
+    // [parallel-merge]
+    // Integer sums: the merged image is the same for any number of threads
+    // Threads number the ray-tree paths in the order they meet them: map them to one tree
+    CacheTree canonical;
+    ParallelRun out;
+    out.image = ImageAccumulator(base.width, base.height);
+    out.threads = threads;
+    for (int k = 0; k < threads; ++k) {
+        const RenderSession& s = *sessions[k];
+        out.image += s.image();
+        out.counters += s.counters();
+        out.queuePeak = std::max(out.queuePeak, s.order().queuePeak());
+        out.regions += s.order().regions();
+        const CacheTree& tree = s.cacheTree();
+        std::vector<int> map(tree.size(), 0);
+        for (int i = 1; i < tree.size(); ++i)
+            map[i] = canonical.child(map[tree.node(i).parent], tree.node(i).kind, tree.node(i).light);
+        out.completed = out.completed && s.done();
+        if (beams) beams->merge(*builders[k], map);
+    }
+    // [parallel-merge]
+    out.paths = canonical.size();
+    if (progress && out.completed) progress(1.0);
+    return out;
+}
+
+}  // namespace rc
