@@ -26,7 +26,6 @@ void CacheTreePanel::refresh(const SessionState* state) {
         const auto& node = tree.node(i);
         QTreeWidgetItem* parent = node.parent >= 0 ? items[node.parent] : nullptr;
         QTreeWidgetItem* item = nullptr;
-        if (parent) item = i < 0 ? nullptr : nullptr;
         // Find an existing item for this node
         const int count = parent ? parent->childCount() : topLevelItemCount();
         for (int k = 0; k < count && !item; ++k) {
@@ -43,8 +42,8 @@ void CacheTreePanel::refresh(const SessionState* state) {
         item->setText(0, QString::fromStdString(tree.label(i)));
         item->setText(1, e.state == rc::CacheEntry::State::Loaded ? "loaded"
                          : e.state == rc::CacheEntry::State::Flushed ? "flushed" : "empty");
-        item->setText(2, e.origin.object < 0 ? QString("eye") : objectName(scene, e.origin.object) + (e.origin.inside ? " (inside)" : ""));
-        item->setText(3, e.state == rc::CacheEntry::State::Empty ? QString() : objectName(scene, e.object));
+        item->setText(2, e.origin.object < 0 ? QString("eye") : objectLabel(scene, e.origin.object) + (e.origin.inside ? " (inside)" : ""));
+        item->setText(3, e.state == rc::CacheEntry::State::Empty ? QString() : objectLabel(scene, e.object));
         QString holds;
         if (lists && e.blockerTarget >= 0) {
             const std::vector<int>* l = lists->find(e.blockerOrigin, e.blockerTarget);

@@ -4,7 +4,7 @@ namespace rcgui {
 
 QString text(std::string_view s) { return QString::fromUtf8(s.data(), qsizetype(s.size())); }
 
-QString objectName(const rc::Scene& scene, int object) {
+QString objectLabel(const rc::Scene& scene, int object) {
     if (object < 0) return "nothing";
     if (object >= scene.size()) return QString("#%1").arg(object);
     return QString("#%1 %2").arg(object).arg(scene.objects[object].shape == rc::Shape::Sphere ? "sphere" : "polygon");

@@ -10,7 +10,7 @@ namespace rcgui {
 
 QString text(std::string_view s);
 /// "#12 sphere" or "nothing".
-QString objectName(const rc::Scene& scene, int object);
+QString objectLabel(const rc::Scene& scene, int object);
 /// "hit", "miss: blocker_hit", "deferred: target_missed", "search".
 QString decisionText(const EventRecord& r);
 

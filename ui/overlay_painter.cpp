@@ -58,19 +58,21 @@ void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o
                            double scale) {
     p.setRenderHint(QPainter::Antialiasing, true);
     const Projector proj(s.scene().camera, s.camera());
-    if (o.frontier) paintFrontier(p, s, scale);
+    if (o.frontier) paintFrontier(p, s, scale, false);
     if (o.misses) paintMisses(p, s, scale);
     if (sel.object >= 0 && sel.object < s.scene().size())
         paintObject(p, s, proj, sel.object, palette::kSelection, withAlpha(palette::kSelection, 70), 3.0);
-    if (auto f = RayFocus::current(s)) paintFocus(p, s, proj, *f, o);
+    if (auto f = RayFocus::ofCurrent(s)) paintFocus(p, s, proj, *f, o);
     if (sel.pixel >= 0 && sel.pixel < s.width() * s.height()) {
         int index = sel.event;
         if (index < 0) index = s.recorder().eventAt(sel.pixel, 0);
-        if (index >= 0) paintFocus(p, s, proj, RayFocus::recorded(s, index), o);
+        if (index >= 0) paintFocus(p, s, proj, RayFocus::ofEvent(s, index), o);
         const QPointF c = pixelCentre(sel.pixel, s.width());
         const double half = std::max(0.5, 7.0 / scale);
         outline(p, QPolygonF(QRectF(c.x() - half, c.y() - half, 2 * half, 2 * half)), palette::kSelection, 2.5);
     }
+    // The queue on top of everything: it is small and it is where the action is
+    if (o.frontier) paintFrontier(p, s, scale, true);
 }
 
 void OverlayPainter::paintFocus(QPainter& p, const SessionState& s, const Projector& proj,
@@ -114,24 +116,40 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
     const rc::BlockerLists* lists = s.session().strategy().blockerLists();
     if (!lists) return;
     int origin = -1, target = -1;
+    rc::Vec3 coneAxis = f.ray.d;
+    double coneAngle = -1.0;
     if (f.current) {
         const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
         if (e.state == rc::CacheEntry::State::Loaded) {
             origin = e.blockerOrigin;
             target = e.blockerTarget;
+            if (e.object < 0 && e.coneAngle >= 0.0) {
+                coneAxis = e.coneAxis;
+                coneAngle = e.coneAngle;
+            }
         }
     } else {
         origin = lists->originSite(f.origin);
         target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light) : f.hit;
+        coneAngle = emptyConeAround(s.scene(), f);
     }
-    if (origin < 0 || target < 0) return;
+    // An eye ray that hit nothing: the cone of eye rays known to hit nothing either
+    if (coneAngle >= 0.0) {
+        outline(p, proj.eyeCone(coneAxis, coneAngle), palette::kHull, 2.5, Qt::DashLine, withAlpha(palette::kHull, 30));
+        if (auto c = proj.point(proj.eye() + coneAxis)) {
+            p.setPen(cosmetic(palette::kHull, 2.0));
+            const double r = 4.0 / std::sqrt(std::abs(p.transform().determinant()));
+            p.drawLine(*c - QPointF(r, r), *c + QPointF(r, r));
+            p.drawLine(*c - QPointF(r, -r), *c + QPointF(r, -r));
+        }
+    }
     const rc::Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
     outline(p, proj.hull(a, b), palette::kHull, 2.5, Qt::SolidLine, withAlpha(palette::kHull, 45));
     outline(p, proj.silhouette(a), palette::kOrigin, 1.5, Qt::DashLine);
     const rc::Scene& scene = s.scene();
     if (const std::vector<int>* blockers = lists->find(origin, target))
         for (int id : *blockers)
-            paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 110), 3.0);
+            paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 80), 3.0);
     if (target < scene.size()) {
         paintObject(p, s, proj, target, palette::kTarget, withAlpha(palette::kTarget, 40), 3.0);
     } else if (auto c = proj.point(b.c)) {
@@ -149,18 +167,19 @@ void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Proje
                                  const QColor& lineColor, const QColor& fill, double width) {
     const rc::Scene& scene = s.scene();
     const rc::Object& obj = scene.objects[object];
+    // Polygons (ground planes) may cover the whole view: outline only, no tint
     if (obj.shape == rc::Shape::Polygon)
-        outline(p, proj.polygon(scene.polygons[obj.index]), lineColor, width, Qt::SolidLine, fill);
+        outline(p, proj.polygon(scene.polygons[obj.index]), lineColor, width, Qt::DashLine);
     else
         outline(p, proj.silhouette(obj.bound), lineColor, width, Qt::SolidLine, fill);
 }
 
-void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale) {
+void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers) {
     const rc::FrontierView f = s.session().order().frontier();
     const TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height();
     // Regions of the path being filled: finished ones tinted, the current one bright
-    if (f.path >= 0) {
+    if (!markers && f.path >= 0) {
         if (cachedState_ != &s || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             regions_.fill(Qt::transparent);
@@ -177,8 +196,9 @@ void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double sc
         }
         p.drawImage(QRectF(0, 0, w, h), regions_);
     }
+    if (!markers) return;
     // Queued pixels and deferred seeds: at least a few screen pixels big
-    const double size = std::max(1.0, 6.0 / scale);
+    const double size = std::max(1.0, 8.0 / scale);
     auto mark = [&](int px, const QColor& c) {
         const QPointF ctr = pixelCentre(px, w);
         p.drawRect(QRectF(ctr.x() - size / 2, ctr.y() - size / 2, size, size));
@@ -192,12 +212,16 @@ void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double sc
 }
 
 void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scale) {
+    // Misses at the path of the ray being traced (eye, eye/reflection, ...), by reason
     const TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height();
+    const int path = rec.lastEvent() ? rec.lastEvent()->task.node : 0;
     std::array<QVector<QPointF>, rc::kMissReasons> points;
     for (int px = 0; px < w * h; ++px) {
-        const rc::MissReason r = rec.missReasonAt(px);
-        if (r != rc::MissReason::None) points[int(r)] << pixelCentre(px, w);
+        const int i = rec.eventAt(px, path);
+        if (i < 0) continue;
+        const EventRecord& r = rec.events()[i];
+        if (r.rayDecision() == rc::Decision::Miss) points[r.reason] << pixelCentre(px, w);
     }
     const double width = std::clamp(scale * 0.55, 2.0, 12.0);
     for (int r = 1; r < rc::kMissReasons; ++r) {
@@ -219,7 +243,7 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                    .arg(QString::fromUtf8(rc::toString(session.order().kind()).data()))
                    .arg(QString("%1x%2").arg(s.width()).arg(s.height()))
                    .arg(session.steps());
-    if (auto f = RayFocus::current(s)) {
+    if (auto f = RayFocus::ofCurrent(s)) {
         const auto& e = *s.recorder().lastEvent();
         QString d = QString::fromUtf8(rc::toString(e.lookup.decision).data());
         if (e.lookup.reason != rc::MissReason::None)
@@ -235,7 +259,7 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
     if (o.hull) {
         if (session.strategy().blockerLists()) {
-            keys.push_back({palette::kHull, "blocker hull of origin and target"});
+            keys.push_back({palette::kHull, "blocker hull of origin and target (dashed: empty cone of eye rays)"});
             keys.push_back({palette::kTarget, "target (cached object)"});
             keys.push_back({palette::kBlocker, "potential blockers"});
         } else {
@@ -256,7 +280,11 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
         }
     }
     if (o.misses) {
+        // Counted over every path; the marks show the path of the ray being traced
         const rc::Counters& n = session.counters();
+        const int path = s.recorder().lastEvent() ? s.recorder().lastEvent()->task.node : 0;
+        keys.push_back({Qt::transparent, QString("misses marked at path %1; all paths:")
+                                             .arg(QString::fromStdString(session.cacheTree().label(path)))});
         for (int r = 1; r < rc::kMissReasons; ++r)
             if (n.missReasons[r] > 0)
                 keys.push_back({palette::missReason(rc::MissReason(r)),
@@ -265,30 +293,40 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     }
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
 
+    if (!o.legend) keys.clear();
     const QFontMetricsF fm(p.font());
     const double lh = fm.height() + 2;
-    double width = 0;
-    for (const QString& c : caption) width = std::max(width, fm.horizontalAdvance(c));
-    for (const auto& k : keys) width = std::max(width, fm.horizontalAdvance(k.second) + lh * 1.3);
-    if (!o.legend) keys.clear();
-    const double height = lh * (caption.size() + keys.size()) + 8;
-    QRectF box(area.left() + 8, area.top() + 8, width + 16, height);
     p.setRenderHint(QPainter::Antialiasing, true);
+    // The caption at the top left
+    double cw = 0;
+    for (const QString& c : caption) cw = std::max(cw, fm.horizontalAdvance(c));
+    QRectF top(area.left() + 8, area.top() + 8, cw + 16, lh * caption.size() + 8);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 175));
+    p.drawRoundedRect(top, 6, 6);
+    p.setPen(Qt::white);
+    double y = top.top() + 4;
+    for (const QString& c : caption) {
+        p.drawText(QRectF(top.left() + 8, y, cw, lh), Qt::AlignVCenter | Qt::AlignLeft, c);
+        y += lh;
+    }
+    if (keys.empty()) return;
+    // The colour key at the bottom left
+    double kw = 0;
+    for (const auto& k : keys) kw = std::max(kw, fm.horizontalAdvance(k.second) + lh * 1.3);
+    QRectF box(area.left() + 8, area.bottom() - 8 - (lh * keys.size() + 8), kw + 16, lh * keys.size() + 8);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
     p.drawRoundedRect(box, 6, 6);
-    double y = box.top() + 4;
-    p.setPen(Qt::white);
-    for (const QString& c : caption) {
-        p.drawText(QRectF(box.left() + 8, y, width, lh), Qt::AlignVCenter | Qt::AlignLeft, c);
-        y += lh;
-    }
+    y = box.top() + 4;
     for (const auto& [colour, text] : keys) {
-        p.setPen(QPen(Qt::black, 1));
-        p.setBrush(colour);
-        p.drawRect(QRectF(box.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
+        if (colour.alpha() > 0) {
+            p.setPen(QPen(Qt::black, 1));
+            p.setBrush(colour);
+            p.drawRect(QRectF(box.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
+        }
         p.setPen(Qt::white);
-        p.drawText(QRectF(box.left() + 8 + lh * 1.3, y, width, lh), Qt::AlignVCenter | Qt::AlignLeft, text);
+        p.drawText(QRectF(box.left() + 8 + lh * 1.3, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft, text);
         y += lh;
     }
 }

@@ -37,7 +37,7 @@ private:
     void paintHull(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f);
     void paintObject(QPainter& p, const SessionState& s, const Projector& proj, int object,
                      const QColor& line, const QColor& fill, double width);
-    void paintFrontier(QPainter& p, const SessionState& s, double scale);
+    void paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers);
     void paintMisses(QPainter& p, const SessionState& s, double scale);
 
     const SessionState* cachedState_ = nullptr;

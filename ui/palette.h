@@ -17,7 +17,7 @@ inline const QColor kHull{224, 64, 251};         ///< blocker hull
 inline const QColor kTarget{0, 230, 118};        ///< target sphere of a blocker list
 inline const QColor kBlocker{255, 145, 0};       ///< potential blockers
 inline const QColor kOrigin{255, 255, 255};      ///< origin sphere of a blocker list
-inline const QColor kQueued{255, 235, 59};       ///< breadth-first queue
+inline const QColor kQueued{118, 255, 3};        ///< breadth-first queue
 inline const QColor kDeferred{255, 23, 68};      ///< deferred seeds
 inline const QColor kRegion{255, 255, 255};      ///< the region being filled
 inline const QColor kSelection{0, 176, 255};     ///< selected pixel and object

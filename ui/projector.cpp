@@ -65,21 +65,38 @@ QPolygonF Projector::silhouette(const rc::Sphere& s, int samples) const {
 }
 
 QPolygonF Projector::hull(rc::Sphere a, rc::Sphere b, int samples) const {
-    // A site behind the eye: slide it (and scale it) towards the other one, up to the near plane
+    auto holdsEye = [&](const rc::Sphere& s) { return glm::length(s.c - eye_) <= s.r; };
+    // A sphere reaching behind the near plane: slide it (and blend its radius) towards the
+    // other one until it is in front; what is cut off lies off the image anyway
     auto pull = [&](rc::Sphere& s, const rc::Sphere& towards) {
-        const double ds = depth(s.c), dt = depth(towards.c);
-        const double limit = near_ * 4.0 + std::max(s.r, towards.r);
-        if (ds >= limit || dt <= ds) return;
-        const double f = (limit - ds) / (dt - ds);
-        if (f >= 1.0) return;
+        const double target = near_ * 4.0;
+        const double ds = depth(s.c) - s.r, dt = depth(towards.c) - towards.r;
+        if (ds >= target || holdsEye(s)) return;
+        if (dt <= target) return;
+        const double f = (target - ds) / (dt - ds);
         s.c = s.c + (towards.c - s.c) * f;
         s.r = s.r + (towards.r - s.r) * f;
     };
     pull(a, b);
     pull(b, a);
-    QPolygonF pts = silhouette(a, samples);
-    pts << silhouette(b, samples);
+    QPolygonF pts;
+    if (!holdsEye(a)) pts << silhouette(a, samples);
+    if (!holdsEye(b)) pts << silhouette(b, samples);
     return convexHull(pts);
+}
+
+QPolygonF Projector::eyeCone(const rc::Vec3& axis, double angle, int samples) const {
+    QPolygonF out;
+    if (!(angle > 0.0) || angle >= M_PI / 2) return out;
+    rc::Vec3 e1, e2;
+    const rc::Vec3 n = glm::normalize(axis);
+    basis(n, e1, e2);
+    for (int i = 0; i < samples; ++i) {
+        const double a = 2.0 * M_PI * i / samples;
+        const rc::Vec3 d = std::cos(angle) * n + std::sin(angle) * (std::cos(a) * e1 + std::sin(a) * e2);
+        if (auto p = point(eye_ + d)) out << *p;
+    }
+    return out;
 }
 
 QPolygonF Projector::polygon(const rc::Polygon& poly) const {

@@ -4,6 +4,7 @@
 /// coordinates through the render's camera, for the overlays.
 #include <optional>
 
+#include <QLineF>
 #include <QPointF>
 #include <QPolygonF>
 
@@ -30,6 +31,8 @@ public:
     /// lines): the convex hull of the two projected silhouettes. A sphere holding the eye
     /// adds nothing: from inside, the hull is seen through the other sphere.
     QPolygonF hull(rc::Sphere a, rc::Sphere b, int samples = 64) const;
+    /// The outline of the cone of eye rays within `angle` (radians) of direction `axis`.
+    QPolygonF eyeCone(const rc::Vec3& axis, double angle, int samples = 64) const;
     /// The outline of a convex polygon.
     QPolygonF polygon(const rc::Polygon& p) const;
     /// Distance from the eye along the view direction.

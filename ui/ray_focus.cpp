@@ -1,6 +1,9 @@
 #include "ray_focus.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
 
 #include "geometry/intersection.h"
 
@@ -13,7 +16,7 @@ rc::Vec3 RayFocus::segmentEnd(const rc::Scene& scene) const {
     return ray.at(r.hit ? std::max(0.0, r.t1) : 0.0);
 }
 
-std::optional<RayFocus> RayFocus::current(const SessionState& s) {
+std::optional<RayFocus> RayFocus::ofCurrent(const SessionState& s) {
     const auto& e = s.recorder().lastEvent();
     if (!e) return std::nullopt;
     RayFocus f;
@@ -32,7 +35,7 @@ std::optional<RayFocus> RayFocus::current(const SessionState& s) {
     return f;
 }
 
-RayFocus RayFocus::recorded(const SessionState& s, int index) {
+RayFocus RayFocus::ofEvent(const SessionState& s, int index) {
     const EventRecord& r = s.recorder().events()[index];
     RayFocus f;
     f.pixel = r.pixel;
@@ -59,6 +62,19 @@ rc::SafetyCylinder cylinderAround(const rc::Scene& scene, const RayFocus& f) {
         radius = std::min(radius, rc::segmentDistance(s.c, from, to) - s.r);
     }
     return {from, to, radius < rc::kNoHit ? radius : -1.0};
+}
+
+double emptyConeAround(const rc::Scene& scene, const RayFocus& f) {
+    if (f.origin.object >= 0 || f.hit >= 0) return -1.0;
+    double angle = rc::kNoHit;
+    for (const rc::Object& o : scene.objects) {
+        const rc::Vec3 v = o.bound.c - f.ray.o;
+        const double dist = glm::length(v);
+        if (dist <= o.bound.r) return -1.0;
+        const double between = std::atan2(glm::length(glm::cross(f.ray.d, v)), glm::dot(f.ray.d, v));
+        angle = std::min(angle, between - std::asin(o.bound.r / dist));
+    }
+    return angle < rc::kNoHit ? angle : -1.0;
 }
 
 }  // namespace rcgui

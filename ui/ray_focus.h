@@ -26,13 +26,17 @@ struct RayFocus {
     rc::Vec3 segmentEnd(const rc::Scene& scene) const;
 
     /// The ray of the last trace event, if any.
-    static std::optional<RayFocus> current(const SessionState& s);
+    static std::optional<RayFocus> ofCurrent(const SessionState& s);
     /// The ray of recorded event `index`.
-    static RayFocus recorded(const SessionState& s, int index);
+    static RayFocus ofEvent(const SessionState& s, int index);
 };
 
 /// The Speer-DeRose-Barsky cylinder of safety around a ray's segment: the largest
 /// capsule no other object's bounding sphere enters (radius < 0 if none).
 rc::SafetyCylinder cylinderAround(const rc::Scene& scene, const RayFocus& f);
+
+/// The widest cone of eye rays around `f`'s direction that no bounding sphere enters,
+/// as the blocker cache builds it for an eye ray that hits nothing (< 0: none).
+double emptyConeAround(const rc::Scene& scene, const RayFocus& f);
 
 }  // namespace rcgui

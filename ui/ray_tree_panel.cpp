@@ -31,7 +31,7 @@ void RayTreePanel::showPixel(const SessionState* state, int pixel) {
         auto* item = parentIt != byNode.end() ? new QTreeWidgetItem(parentIt->second) : new QTreeWidgetItem(this);
         item->setText(0, QString::fromStdString(paths.label(r.node)));
         item->setText(1, text(rc::toString(r.rayKind())));
-        item->setText(2, r.deferred() ? QString("?") : objectName(state->scene(), r.hit));
+        item->setText(2, r.deferred() ? QString("?") : objectLabel(state->scene(), r.hit));
         item->setText(3, decisionText(r));
         item->setText(4, QString::number(r.tests));
         item->setText(5, QString::number(r.step));

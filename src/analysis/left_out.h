@@ -10,16 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
-#include "trace/shading.h"
+#include "render/render_session.h"
 
 namespace rc {
 
-class BlockerLists;
-
 /// What renders of `scene` leave out, one line each such as "shadow rays: no lights".
-/// With `lists`, also how many blocker lists were never built.
-std::vector<std::string> leftOut(const Scene& scene, const ShadingOptions& shading = {},
-                                 const BlockerLists* lists = nullptr);
+/// With `options`, also what its depth leaves out; with `counters` of a blocker-cache
+/// render, how many of the possible blocker lists were never built.
+std::vector<std::string> leftOut(const Scene& scene, const RenderOptions* options = nullptr,
+                                 const Counters* counters = nullptr);
 
 }  // namespace rc

@@ -274,7 +274,7 @@ std::vector<IntersectionRow> compareIntersections(int raysPerCase, std::uint64_t
         add(measure<double, false>(probes, ref), "textbook", "double");
         add(measure<double, true>(probes, ref), "stable", "double");
         IntersectionRow r = measure<LD, true>(probes, ref);
-        add(r, "reference", "long double");
+        add(r, "stable", "long double");
     }
     return rows;
 }

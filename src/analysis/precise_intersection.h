@@ -27,7 +27,7 @@ long double preciseHit(const Scene& scene, const Ray& ray, int id, const RayOrig
 /// One row of the intersection table: a formula at a precision on one stiff case.
 struct IntersectionRow {
     std::string stiffCase;    ///< e.g. "r=1e-3 sphere 1e6 away"
-    std::string formula;      ///< "textbook" | "stable" | "reference"
+    std::string formula;      ///< "textbook" | "stable"
     std::string precision;    ///< "float" | "double" | "long double"
     double maxRelError = 0;   ///< of t, over rays both it and the reference hit
     double medianRelError = 0;

@@ -43,22 +43,21 @@ public:
         if (e.deferred) return;
         const Query& q = e.task.query;
         const Answer& a = e.lookup.answer;
-        if (a.object >= 0) {
-            const long double ref = preciseHit(scene_, q.ray, a.object, q.origin);
-            if (!std::isfinite(double(ref))) {
-                ++flips;
-            } else {
-                errors.push_back(double(std::abs((long double)a.t - ref) / std::abs(ref)));
-            }
-        }
-        if (q.kind == RayKind::Shadow && a.object >= 0) {
+        if (a.object < 0) return;
+        if (q.kind == RayKind::Shadow) {
             const double scale = std::max({std::abs(q.ray.o.x), std::abs(q.ray.o.y), std::abs(q.ray.o.z)});
             const bool self = a.object == q.origin.object && !q.origin.inside;
             if (self || a.t < 1e-9 * scale) {
+                // Acne: counted here, and kept out of the distance errors (a root at the
+                // rounding level of the origin has no relative accuracy to speak of)
                 ++acneRays;
                 acne[e.task.pixel] = 1;
+                return;
             }
         }
+        const long double ref = preciseHit(scene_, q.ray, a.object, q.origin);
+        if (!std::isfinite(double(ref))) ++flips;
+        else errors.push_back(double(std::abs((long double)a.t - ref) / std::abs(ref)));
     }
     const Scene& scene_;
     std::vector<double> errors;

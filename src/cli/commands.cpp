@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "analysis/beam_tree.h"
+#include "analysis/left_out.h"
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "render/report.h"
@@ -30,8 +31,8 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
         c->add_option("--order", f.order, "scanline | progressive | bfs")
             ->check(CLI::IsMember(kOrders))->capture_default_str();
     }
-    c->add_option("--accel", f.accel, "complete search: linear | grid")
-        ->check(CLI::IsMember({"linear", "grid"}))->capture_default_str();
+    c->add_option("--accel", f.accel, "complete search: linear | grid | embree (comparison only)")
+        ->check(CLI::IsMember({"linear", "grid", "embree"}))->capture_default_str();
     c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
     c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, 16384));
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
@@ -75,10 +76,12 @@ int renderCommand(const RenderArgs& a) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     bool shown = false;
+    double lastShown = 0.0;
     const ParallelRun run = renderParallel(scene, options, a.threads, a.stats.empty() ? nullptr : &beams,
                                            [&](double done) {
         const double s = std::chrono::duration<double>(Clock::now() - start).count();
-        if (!a.quiet && s > 1.0) {
+        if (!a.quiet && s > 1.0 && (s - lastShown > 0.5 || done >= 1.0)) {
+            lastShown = s;
             std::fprintf(stderr, "\rrendering %s: %5.1f%%  %6.1f s", scene->name.c_str(), 100.0 * done, s);
             shown = true;
         }
@@ -91,7 +94,8 @@ int renderCommand(const RenderArgs& a) {
     const Counters& n = run.counters;
     if (!a.stats.empty()) {
         const BeamTreeStats b = beams.build();
-        const RenderSummary summary{scene->name, options, n, run.queuePeak, run.regions, run.paths, run.threads};
+        const RenderSummary summary{scene->name, options, n, run.queuePeak, run.regions, run.paths, run.threads,
+                                    leftOut(*scene, &options, &n)};
         writeTextFile(a.stats, statsJson(summary, seconds, &b).dump(2) + "\n");
     }
     if (!a.quiet) {
@@ -147,6 +151,9 @@ void addInfoCommand(CLI::App& app, Commands& out) {
     std::printf("rays       primary%s%s%s\n", s.lights.empty() ? "" : ", shadow",
                 reflective ? ", reflection" : "", transparent ? ", refraction" : "");
     std::printf("objects    %d reflective, %d transparent\n", reflective, transparent);
+    const std::vector<std::string> left = leftOut(s);
+    std::printf("left out   %s\n", left.empty() ? "nothing" : left.front().c_str());
+    for (std::size_t i = 1; i < left.size(); ++i) std::printf("           %s\n", left[i].c_str());
     return 0;
     }});
 }

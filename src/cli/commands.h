@@ -36,6 +36,7 @@ void addRenderCommand(CLI::App& app, Commands& out);
 void addInfoCommand(CLI::App& app, Commands& out);
 void addScenesCommand(CLI::App& app, Commands& out);
 void addTable1Command(CLI::App& app, Commands& out);
+void addBenchCommand(CLI::App& app, Commands& out);
 void addStabilityCommand(CLI::App& app, Commands& out);
 void addConvergenceCommand(CLI::App& app, Commands& out);
 

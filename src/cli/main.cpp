@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     rc::cli::addInfoCommand(app, commands);
     rc::cli::addScenesCommand(app, commands);
     rc::cli::addTable1Command(app, commands);
+    rc::cli::addBenchCommand(app, commands);
     rc::cli::addStabilityCommand(app, commands);
     rc::cli::addConvergenceCommand(app, commands);
     try {

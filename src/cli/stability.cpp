@@ -27,7 +27,9 @@ int intersectionTable(const StabilityArgs& a) {
     const std::vector<IntersectionRow> rows = compareIntersections(a.rays);
     std::printf("Ray-sphere intersection, %d seeded rays per case: relative error of the nearest hit t\n"
                 "against the stable formula in long double (x87, 64-bit mantissa) on the same double\n"
-                "inputs; 'wrong' counts rays called a hit where the reference misses, or the reverse.\n\n",
+                "inputs; 'wrong' counts rays called a hit where the reference misses, or the reverse.\n"
+                "The long double row of each case is the stable formula taking |d| = 1, as the double\n"
+                "code does: how far that assumption alone moves t.\n\n",
                 a.rays);
     for (const auto& [name, why] : intersectionCases()) std::printf("  %-24s %s\n", name.c_str(), why.c_str());
     std::printf("\n%-24s %-9s %-11s %10s %10s %7s %8s\n", "case", "formula", "precision", "max rel", "median",

@@ -1,5 +1,7 @@
 #include "render/report.h"
 
+#include "analysis/left_out.h"
+
 namespace rc {
 
 nlohmann::json countersJson(const Counters& n) {
@@ -31,7 +33,7 @@ nlohmann::json countersJson(const Counters& n) {
 
 RenderSummary summarize(const RenderSession& s) {
     return {s.scene().name, s.options(), s.counters(), s.order().queuePeak(), s.order().regions(),
-            s.cacheTree().size(), 1};
+            s.cacheTree().size(), 1, leftOut(s.scene(), &s.options(), &s.counters())};
 }
 
 nlohmann::json statsJson(const RenderSummary& s, double seconds, const BeamTreeStats* beams) {
@@ -50,6 +52,7 @@ nlohmann::json statsJson(const RenderSummary& s, double seconds, const BeamTreeS
     j["regions"] = s.regions;
     j["band"] = s.options.band;
     j["ray_tree_paths"] = s.paths;
+    j["left_out"] = s.leftOut;
     if (beams) {
         j["beam_tree"] = {{"nodes", beams->nodes},
                           {"average_ray_tree_size", beams->averageRayTreeSize},

@@ -1,19 +1,28 @@
 #include "search/accelerator.h"
 
+#include "search/embree_search.h"
 #include "search/uniform_grid.h"
 
 namespace rc {
 
-std::string_view toString(AccelKind k) { return k == AccelKind::Grid ? "grid" : "linear"; }
+std::string_view toString(AccelKind k) {
+    switch (k) {
+        case AccelKind::Linear: return "linear";
+        case AccelKind::Grid: return "grid";
+        case AccelKind::Embree: return "embree";
+    }
+    return "?";
+}
 
 std::optional<AccelKind> parseAccelKind(std::string_view s) {
-    for (AccelKind k : {AccelKind::Linear, AccelKind::Grid})
+    for (AccelKind k : {AccelKind::Linear, AccelKind::Grid, AccelKind::Embree})
         if (toString(k) == s) return k;
     return std::nullopt;
 }
 
 std::unique_ptr<CompleteSearch> makeCompleteSearch(AccelKind kind, const Scene& scene) {
     if (kind == AccelKind::Grid) return std::make_unique<UniformGrid>(scene);
+    if (kind == AccelKind::Embree) return std::make_unique<EmbreeSearch>(scene);
     return std::make_unique<LinearSearch>(scene);
 }
 

@@ -10,7 +10,8 @@
 namespace rc {
 
 /// Which structure answers complete searches. Any cache sits in front of any of them.
-enum class AccelKind { Linear, Grid };
+/// Embree is for comparison only: single precision, so not covered by the exactness guarantee.
+enum class AccelKind { Linear, Grid, Embree };
 std::string_view toString(AccelKind k);
 std::optional<AccelKind> parseAccelKind(std::string_view s);
 

@@ -14,7 +14,7 @@ double angleBetween(const Vec3& u, const Vec3& v) {
 }  // namespace
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search)
-    : CacheStrategy(scene, search), lists_(scene) {}
+    : CacheStrategy(scene, search), lists_(scene, search) {}
 
 Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
     const MissReason why = unusable(q, e);
@@ -89,7 +89,8 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
         lists_.get(e.blockerOrigin, e.blockerTarget, n);
     } else {
         e.blockerTarget = -1;
-        buildCone(q, e, n);
+        // Cones weigh every object; in front of a grid, the cylinder needs only nearby cells
+        if (search_.nearRadius() == kNoHit) buildCone(q, e, n);
         if (e.coneAngle < 0.0) buildCylinder(q, a, e, n);
     }
 }
@@ -102,7 +103,8 @@ void BlockerCache::buildCone(const Query& q, CacheEntry& e, Counters& n) const {
     const double reach = from.r + slack_;
     double angle = kNoHit;
     for (int id = 0; id < scene_.size(); ++id) {
-        if (id == q.origin.object) continue;  // a ray leaving an object cannot meet it again
+        // A ray leaving an object outward cannot meet it again; one heading into it can
+        if (id == q.origin.object && !q.origin.inside) continue;
         const Sphere& s = scene_.objects[id].bound;
         const Vec3 v = s.c - from.c;
         const double dist = glm::length(v);

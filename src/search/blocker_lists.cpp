@@ -2,14 +2,15 @@
 
 #include <algorithm>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "geometry/cone.h"
 
 namespace rc {
 
-BlockerLists::BlockerLists(const Scene& scene)
-    : scene_(scene), sites_(scene.size() + 1 + int(scene.lights.size())) {
+BlockerLists::BlockerLists(const Scene& scene, const CompleteSearch& search)
+    : scene_(scene), search_(search), sites_(scene.size() + 1 + int(scene.lights.size())) {
     // Rounding only ever adds spheres to a list: widen the hull by a few ulps of the scene
     double scale = glm::length(scene.bound.c) + scene.bound.r + glm::length(scene.camera.from);
     for (const Light& l : scene.lights) scale = std::max(scale, glm::length(l.position));
@@ -34,8 +35,11 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     // Every object whose bounding sphere meets the hull of origin and target may block
     const Sphere a = siteSphere(origin);
     const Sphere b = siteSphere(target);
+    std::vector<int> candidates;
+    search_.objectsNear(glm::min(a.c - Vec3(a.r), b.c - Vec3(b.r)) - Vec3(slack_),
+                        glm::max(a.c + Vec3(a.r), b.c + Vec3(b.r)) + Vec3(slack_), candidates);
     std::vector<std::pair<double, int>> found;
-    for (int id = 0; id < scene_.size(); ++id) {
+    for (int id : candidates) {
         if (id == target) continue;
         ++n.hullTests;
         const Sphere& s = scene_.objects[id].bound;

@@ -12,6 +12,7 @@
 
 #include "analysis/statistics.h"
 #include "scene/scene.h"
+#include "search/complete_search.h"
 
 namespace rc {
 
@@ -28,7 +29,8 @@ struct BlockerList {
 /// sphere of radius 0.
 class BlockerLists {
 public:
-    explicit BlockerLists(const Scene& scene);
+    /// Candidates come from `search` (all objects for a linear scan, nearby cells for a grid).
+    BlockerLists(const Scene& scene, const CompleteSearch& search);
 
     int eyeSite() const { return scene_.size(); }
     int lightSite(int k) const { return scene_.size() + 1 + k; }
@@ -51,6 +53,7 @@ private:
         return std::uint64_t(origin) * std::uint64_t(sites_) + std::uint64_t(target);
     }
     const Scene& scene_;
+    const CompleteSearch& search_;
     int sites_;
     double slack_;
     std::unordered_map<std::uint64_t, BlockerList> lists_;

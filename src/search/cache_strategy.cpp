@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "search/blocker_cache.h"
@@ -62,8 +63,11 @@ void CacheStrategy::buildCylinder(const Query& q, const Answer& a, CacheEntry& e
     // The radius is the distance from the segment to the nearest other surface
     const Vec3 from = q.ray.o;
     const Vec3 to = segmentEnd(q, a);
-    double radius = kNoHit;
-    for (int id = 0; id < scene_.size(); ++id) {
+    // Only objects near the segment can set the radius; the search says which, and caps it
+    double radius = search_.nearRadius();
+    std::vector<int>& candidates = scratch_;
+    search_.objectsNear(glm::min(from, to) - Vec3(radius), glm::max(from, to) + Vec3(radius), candidates);
+    for (int id : candidates) {
         if (id == a.object) continue;
         if (id == q.origin.object && !q.origin.inside) continue;  // cannot be met again
         const Sphere& s = scene_.objects[id].bound;

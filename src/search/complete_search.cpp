@@ -2,6 +2,11 @@
 
 namespace rc {
 
+void CompleteSearch::objectsNear(const Vec3&, const Vec3&, std::vector<int>& out) const {
+    out.resize(std::size_t(scene_.size()));
+    for (int id = 0; id < scene_.size(); ++id) out[id] = id;
+}
+
 Answer LinearSearch::nearest(const Query& q, Counters& n) const {
     // [linear-search]
     // Test every object; keep the nearest hit in front of tmax

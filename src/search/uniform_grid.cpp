@@ -8,7 +8,7 @@
 
 namespace rc {
 
-UniformGrid::UniformGrid(const Scene& scene, double density) : scene_(scene), mailbox_(scene.size(), 0) {
+UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(scene), mailbox_(scene.size(), 0) {
     if (scene.size() == 0) {
         cellStart_.assign(2, 0);
         return;

@@ -2,6 +2,7 @@
 /// \file
 /// \brief A uniform grid walked with a 3D-DDA (Fujimoto and Iwata 1985; Amanatides and Woo
 /// 1987): a complete search that visits only the cells a ray passes through.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -22,10 +23,14 @@ public:
     std::array<int, 3> resolution() const { return res_; }
     /// Objects whose bounding boxes overlap the box [lo, hi] (each once, ascending).
     std::vector<int> objectsInBox(const Vec3& lo, const Vec3& hi) const;
+    void objectsNear(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const override {
+        out = objectsInBox(lo, hi);
+    }
+    /// The smallest side of a cell.
+    double nearRadius() const override { return std::min(cellSize_.x, std::min(cellSize_.y, cellSize_.z)); }
 
 private:
     int cellIndex(int x, int y, int z) const { return (z * res_[1] + y) * res_[0] + x; }
-    const Scene& scene_;
     Vec3 lo_{0.0}, hi_{0.0}, cellSize_{1.0};
     std::array<int, 3> res_{1, 1, 1};
     std::vector<std::uint32_t> cellStart_;  ///< CSR: objects of cell c are ids_[start[c], start[c+1])

@@ -1,0 +1,115 @@
+// `raycache bench`: rays per second of every complete search, with and without caches,
+// all configurations interleaved in one run so the ratios hold on a noisy machine.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "cli/commands.h"
+#include "render/output_files.h"
+#include "render/parallel_render.h"
+#include "scene/builtin_scenes.h"
+#include "search/embree_search.h"
+
+namespace rc::cli {
+
+namespace {
+struct BenchArgs {
+    std::vector<std::string> scenes{"cube:5", "cube:10", "cube:20", "../shared/scenes/balls2.nff"};
+    int repeat = 3;
+    int threads = 1;
+    int linearLimit = 1000;
+    std::string csv;
+    RenderFlags flags;
+};
+
+struct Config {
+    AccelKind accel;
+    CacheKind cache;
+    OrderKind order;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+int bench(const BenchArgs& a) {
+    std::vector<Config> configs;
+    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid}) {
+        configs.push_back({accel, CacheKind::None, OrderKind::Scanline});
+        for (CacheKind cache : {CacheKind::Cylinder, CacheKind::Blocker})
+            for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) configs.push_back({accel, cache, order});
+    }
+    if (embreeAvailable()) configs.push_back({AccelKind::Embree, CacheKind::None, OrderKind::Scanline});
+
+    std::ostringstream csv;
+    csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree\n";
+    for (const std::string& spec : a.scenes) {
+        auto scene = std::make_shared<const Scene>(loadScene(spec, a.flags.seed));
+        RenderOptions base = a.flags.options();
+        if (base.width <= 0) base.width = 1024;
+        if (base.height <= 0) base.height = base.width;
+        std::vector<Config> run;
+        for (const Config& c : configs)
+            if (c.accel != AccelKind::Linear || scene->size() <= a.linearLimit) run.push_back(c);
+        std::vector<std::vector<double>> times(run.size());
+        std::vector<Counters> counts(run.size());
+        // [bench-interleave]
+        for (int r = 0; r < a.repeat; ++r) {
+            for (std::size_t c = 0; c < run.size(); ++c) {
+                RenderOptions o = base;
+                o.accel = run[c].accel;
+                o.cache = run[c].cache;
+                o.order = run[c].order;
+                const auto start = std::chrono::steady_clock::now();
+                const ParallelRun result = renderParallel(scene, o, a.threads);
+                times[c].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                counts[c] = result.counters;
+            }
+        }
+        // [bench-interleave]
+        double embreeRate = 0.0;
+        for (std::size_t c = 0; c < run.size(); ++c)
+            if (run[c].accel == AccelKind::Embree) embreeRate = double(counts[c].totalRays()) / median(times[c]);
+        std::printf("\n%s: %d objects, %dx%d, %d thread(s), median of %d\n", scene->name.c_str(), scene->size(),
+                    base.width, base.height, a.threads, a.repeat);
+        std::printf("  %-8s %-9s %-9s %9s %12s %11s %10s\n", "accel", "cache", "order", "seconds", "Mrays/s",
+                    "tests/ray", "vs embree");
+        for (std::size_t c = 0; c < run.size(); ++c) {
+            const double t = median(times[c]);
+            const double rays = double(counts[c].totalRays());
+            const double rate = rays / t;
+            const double perRay = double(counts[c].intersectionTests) / rays;
+            const double vsEmbree = embreeRate > 0.0 ? rate / embreeRate : 0.0;
+            std::printf("  %-8s %-9s %-9s %9.3f %12.3f %11.2f %10.2f\n", std::string(toString(run[c].accel)).c_str(),
+                        std::string(toString(run[c].cache)).c_str(), std::string(toString(run[c].order)).c_str(), t,
+                        rate / 1e6, perRay, vsEmbree);
+            csv << scene->name << ',' << toString(run[c].accel) << ',' << toString(run[c].cache) << ','
+                << toString(run[c].order) << ',' << a.threads << ',' << t << ',' << rays << ',' << rate << ',' << perRay
+                << ',' << vsEmbree << '\n';
+        }
+        if (scene->size() > a.linearLimit)
+            std::printf("  (linear scan left out: more than %d objects; --linear-limit to change)\n", a.linearLimit);
+    }
+    if (!embreeAvailable()) std::printf("\nEmbree: not in this build (install libembree-dev and rebuild)\n");
+    else std::printf("\nEmbree: tests/ray is not counted (its own BVH); it is single precision, for comparison only\n");
+    if (!a.csv.empty()) writeTextFile(a.csv, csv.str());
+    return 0;
+}
+}  // namespace
+
+void addBenchCommand(CLI::App& app, Commands& out) {
+    auto a = std::make_shared<BenchArgs>();
+    CLI::App* c = app.add_subcommand("bench", "rays per second of every complete search and cache, and Embree");
+    c->add_option("--scenes", a->scenes, "scenes to run")->delimiter(',')->capture_default_str();
+    c->add_option("--repeat", a->repeat, "repeats; times are medians")->check(CLI::Range(1, 100))->capture_default_str();
+    c->add_option("--threads", a->threads, "threads (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
+    c->add_option("--linear-limit", a->linearLimit, "leave the linear scan out above this many objects")
+        ->capture_default_str();
+    c->add_option("--csv", a->csv, "also write the table as CSV");
+    a->flags.addTo(c, false);
+    out.push_back({c, [a] { return bench(*a); }});
+}
+
+}  // namespace rc::cli

@@ -1,0 +1,236 @@
+// `raycache convergence SCENE`: error against run time. For every cache and order, the
+// RMSE of the partial image against the final one as rendering proceeds; and, with
+// jittered supersampling, the RMSE of 1, 2, 4, ... samples per pixel against a
+// high-sample reference, against the time they took. Writes the numbers as CSV and a
+// chart drawn by matplotlib (python3-matplotlib), when it is installed.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "analysis/image_error.h"
+#include "cli/commands.h"
+#include "render/output_files.h"
+#include "scene/builtin_scenes.h"
+
+namespace rc::cli {
+
+namespace {
+
+struct ConvergenceArgs {
+    std::string scene, csv, plot;
+    int spp = 64;
+    int refGrid = 16;
+    int samples = 100;
+    std::uint64_t jitterSeed = 7;
+    RenderFlags flags;
+};
+
+const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker};
+const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};
+
+// The chart: matplotlib, driven from a script this command writes next to the CSV
+const char* kPlotScript = R"PY(
+import csv, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+path, out, title = sys.argv[1], sys.argv[2], sys.argv[3]
+rows = list(csv.DictReader(open(path)))
+colors = {"scanline": "tab:blue", "progressive": "tab:orange", "bfs": "tab:green"}
+styles = {"none": ":", "cylinder": "--", "blocker": "-"}
+fig, axes = plt.subplots(1, 3, figsize=(17, 5.2))
+def series(kind):
+    out = {}
+    for r in rows:
+        if r["kind"] == kind:
+            out.setdefault((r["cache"], r["order"]), []).append(r)
+    return out
+for (cache, order), pts in series("progress").items():
+    steps = [int(p["steps"]) for p in pts]
+    secs = [float(p["seconds"]) for p in pts]
+    err = [float(p["rmse"]) for p in pts]
+    label = cache + ", " + order
+    axes[0].plot(steps, err, styles[cache], color=colors[order], label=label, linewidth=1.4)
+    axes[1].plot(secs, err, styles[cache], color=colors[order], label=label, linewidth=1.4)
+for (cache, order), pts in series("supersample").items():
+    secs = [float(p["seconds"]) for p in pts]
+    err = [float(p["rmse"]) for p in pts]
+    spp = [int(p["spp"]) for p in pts]
+    axes[2].loglog(secs, err, styles[cache], marker="o", markersize=3.5, color=colors[order],
+                   label=cache + ", " + order, linewidth=1.2)
+    if cache == "blocker" and order == "bfs":
+        for s, e, n in zip(secs, err, spp):
+            axes[2].annotate(str(n), (s, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
+axes[0].set_xlabel("rays traced")
+axes[0].set_ylabel("RMSE of the partial image against the final one")
+axes[0].set_title("progress against rays traced")
+axes[1].set_xlabel("seconds")
+axes[1].set_title("progress against run time")
+axes[2].set_xlabel("seconds (all samples so far)")
+axes[2].set_ylabel("RMSE against the high-sample reference")
+axes[2].set_title("jittered supersampling, 1 to N samples per pixel")
+for ax in axes:
+    ax.grid(True, which="both", alpha=0.3)
+axes[1].legend(fontsize=7, ncol=1, title="cache, order", title_fontsize=7)
+axes[2].legend(fontsize=7, ncol=1, title="cache, order", title_fontsize=7)
+fig.suptitle(title)
+fig.tight_layout()
+fig.savefig(out, dpi=110)
+)PY";
+
+std::string shellQuoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+// A python3 that has matplotlib, or ""
+std::string findPython() {
+    for (const char* py : {"/usr/bin/python3", "python3"}) {
+        const std::string cmd = std::string(py) + " -c 'import matplotlib' >/dev/null 2>&1";
+        if (std::system(cmd.c_str()) == 0) return py;
+    }
+    return "";
+}
+
+double at(const std::vector<ProgressPoint>& pts, double fraction) {
+    const std::int64_t target = std::int64_t(fraction * double(pts.back().steps));
+    for (const ProgressPoint& p : pts)
+        if (p.steps >= target) return p.rmse;
+    return pts.back().rmse;
+}
+
+double timeTo(const std::vector<ProgressPoint>& pts, double level) {
+    for (const ProgressPoint& p : pts)
+        if (p.rmse <= level) return p.seconds;
+    return pts.back().seconds;
+}
+
+int convergence(const ConvergenceArgs& a) {
+    auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
+    RenderOptions base = a.flags.options();
+    if (base.width <= 0 && base.height <= 0) {
+        // Default: the scene's size, at most 128 on the longer side
+        const int w = scene->camera.width, h = scene->camera.height, m = std::max(w, h);
+        base.width = m > 128 ? std::max(1, w * 128 / m) : w;
+        base.height = m > 128 ? std::max(1, h * 128 / m) : h;
+    }
+    RenderSession first(scene, base);
+    first.run();
+    base.width = first.width();
+    base.height = first.height();
+    const LinearImage final = linearImage(first.image());
+    const std::int64_t total = first.steps();
+
+    std::ostringstream csv;
+    csv << "kind,cache,order,steps,spp,seconds,rmse\n";
+    std::printf("%s at %dx%d, depth %d: %lld rays.\n\nRMSE of the partial image against the final one as "
+                "rendering proceeds\n(values clamped to [0, 1]; unvisited pixels are black; %d samples per run):\n\n",
+                scene->name.c_str(), base.width, base.height, base.shading.maxDepth, (long long)total, a.samples);
+    std::printf("%-22s %8s %8s %8s %8s %8s %10s %10s\n", "cache, order", "seconds", "10%", "25%", "50%", "75%",
+                "t(<0.05)", "t(<0.01)");
+    for (CacheKind c : kCaches)
+        for (OrderKind o : kOrders) {
+            RenderOptions opt = base;
+            opt.cache = c;
+            opt.order = o;
+            const std::vector<ProgressPoint> pts = traceProgress(scene, opt, final, total, a.samples);
+            const std::string name = std::string(toString(c)) + ", " + std::string(toString(o));
+            std::printf("%-22s %8.4f %8.4f %8.4f %8.4f %8.4f %10.4f %10.4f\n", name.c_str(), pts.back().seconds,
+                        at(pts, 0.10), at(pts, 0.25), at(pts, 0.50), at(pts, 0.75), timeTo(pts, 0.05),
+                        timeTo(pts, 0.01));
+            std::fflush(stdout);
+            for (const ProgressPoint& p : pts)
+                csv << "progress," << toString(c) << ',' << toString(o) << ',' << p.steps << ",1," << p.seconds << ','
+                    << p.rmse << '\n';
+        }
+
+    // Supersampling against a high-sample reference
+    RenderOptions fast = base;
+    fast.cache = CacheKind::Blocker;
+    fast.order = OrderKind::BreadthFirst;
+    double refSeconds = 0.0;
+    const LinearImage reference = averageImage(scene, fast, gridOffsets(a.refGrid), &refSeconds);
+    const std::vector<glm::dvec2> offsets = jitterOffsets(a.spp, a.jitterSeed);
+    std::printf("\nJittered supersampling (Halton 2,3 offsets, one per render, averaged) against a reference of\n"
+                "%d x %d = %d regular samples per pixel (%.2f s): RMSE and seconds at each sample count:\n\n",
+                a.refGrid, a.refGrid, a.refGrid * a.refGrid, refSeconds);
+    std::vector<std::vector<SupersamplePoint>> curves;
+    std::vector<std::string> names;
+    for (CacheKind c : kCaches)
+        for (OrderKind o : kOrders) {
+            RenderOptions opt = base;
+            opt.cache = c;
+            opt.order = o;
+            curves.push_back(superSample(scene, opt, offsets, reference));
+            names.push_back(std::string(toString(c)) + ", " + std::string(toString(o)));
+            for (const SupersamplePoint& p : curves.back())
+                csv << "supersample," << toString(c) << ',' << toString(o) << ",0," << p.spp << ',' << p.seconds
+                    << ',' << p.rmse << '\n';
+        }
+    std::printf("%-6s %8s", "spp", "RMSE");
+    for (const std::string& n : names) std::printf(" %9.9s", n.c_str());
+    std::printf("\n%-6s %8s", "", "");
+    for (const std::string& n : names) std::printf(" %9.9s", n.c_str() + std::min<std::size_t>(n.size(), 10));
+    std::printf("\n");
+    for (std::size_t i = 0; i < curves[0].size(); ++i) {
+        std::printf("%-6d %8.5f", curves[0][i].spp, curves[0][i].rmse);
+        for (const auto& curve : curves) std::printf(" %8.3fs", curve[i].seconds);
+        std::printf("\n");
+    }
+
+    std::string csvPath = a.csv;
+    if (csvPath.empty() && !a.plot.empty())
+        csvPath = (std::filesystem::temp_directory_path() / ("raycache-convergence-" + std::to_string(getpid()) + ".csv")).string();
+    if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
+    if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
+    if (a.plot.empty()) return 0;
+    const std::string python = findPython();
+    if (python.empty()) {
+        std::fprintf(stderr, "raycache: the chart needs python3 with matplotlib (Debian: python3-matplotlib); "
+                             "the numbers are in %s\n", csvPath.c_str());
+        return a.csv.empty() ? 1 : 0;
+    }
+    const std::filesystem::path script =
+        std::filesystem::temp_directory_path() / ("raycache-plot-" + std::to_string(getpid()) + ".py");
+    { std::ofstream(script) << kPlotScript; }
+    const std::string title = scene->name + " at " + std::to_string(base.width) + "x" + std::to_string(base.height) +
+                              ": error against run time";
+    const std::string cmd = python + " " + shellQuoted(script.string()) + " " + shellQuoted(csvPath) + " " + shellQuoted(a.plot) +
+                            " " + shellQuoted(title);
+    const int rc = std::system(cmd.c_str());
+    std::filesystem::remove(script);
+    if (a.csv.empty()) std::filesystem::remove(csvPath);
+    if (rc != 0) {
+        std::fprintf(stderr, "raycache: drawing the chart failed\n");
+        return 1;
+    }
+    std::printf("chart: %s\n", a.plot.c_str());
+    return 0;
+}
+
+}  // namespace
+
+void addConvergenceCommand(CLI::App& app, Commands& out) {
+    auto a = std::make_shared<ConvergenceArgs>();
+    CLI::App* c = app.add_subcommand("convergence", "error against run time: partial images and supersampling, "
+                                                    "every cache and order");
+    c->add_option("scene", a->scene, "an .nff file or a built-in such as cube:5")->required();
+    c->add_option("--csv", a->csv, "write every sample as CSV");
+    c->add_option("--plot", a->plot, "draw the chart (.png or .svg) with matplotlib");
+    c->add_option("--spp", a->spp, "most jittered samples per pixel")->check(CLI::Range(1, 1024))
+        ->capture_default_str();
+    c->add_option("--ref-grid", a->refGrid, "the reference takes ref-grid^2 regular samples per pixel")
+        ->check(CLI::Range(1, 64))->capture_default_str();
+    c->add_option("--samples", a->samples, "RMSE samples per progressive run")->check(CLI::Range(2, 100000))
+        ->capture_default_str();
+    a->flags.addTo(c, false);
+    out.push_back({c, [a] { return convergence(*a); }});
+}
+
+}  // namespace rc::cli

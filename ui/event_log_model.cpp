@@ -1,0 +1,71 @@
+#include "event_log_model.h"
+
+#include <QColor>
+
+#include "labels.h"
+#include "palette.h"
+
+namespace rcgui {
+
+void EventLogModel::setState(const SessionState* state) {
+    const int rows = !state ? 0 : int(missesOnly_ ? state->recorder().misses().size() : state->recorder().events().size());
+    if (state == state_ && rows >= rows_) {
+        // The log only grows: announce the new rows
+        if (rows > rows_) {
+            beginInsertRows({}, rows_, rows - 1);
+            rows_ = rows;
+            endInsertRows();
+        }
+        return;
+    }
+    beginResetModel();
+    state_ = state;
+    rows_ = rows;
+    endResetModel();
+}
+
+void EventLogModel::setMissesOnly(bool on) {
+    if (on == missesOnly_) return;
+    const SessionState* s = state_;
+    missesOnly_ = on;
+    state_ = nullptr;
+    setState(s);
+}
+
+int EventLogModel::eventAt(int row) const {
+    if (!state_ || row < 0 || row >= rows_) return -1;
+    return missesOnly_ ? state_->recorder().misses()[row] : row;
+}
+
+int EventLogModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : rows_; }
+int EventLogModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : 7; }
+
+QVariant EventLogModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    static const char* names[] = {"step", "pixel", "path", "kind", "hit", "decision", "tests"};
+    return QString(names[section]);
+}
+
+QVariant EventLogModel::data(const QModelIndex& index, int role) const {
+    const int i = eventAt(index.row());
+    if (i < 0) return {};
+    const EventRecord& r = state_->recorder().events()[i];
+    if (role == Qt::ForegroundRole && index.column() == 5) {
+        if (r.deferred() || r.rayDecision() == rc::Decision::Miss) return palette::missReason(r.missReason()).darker(130);
+        return {};
+    }
+    if (role != Qt::DisplayRole) return {};
+    const int w = state_->width();
+    switch (index.column()) {
+        case 0: return qlonglong(r.step);
+        case 1: return QString("%1,%2").arg(r.pixel % w).arg(r.pixel / w);
+        case 2: return QString::fromStdString(state_->session().cacheTree().label(r.node));
+        case 3: return text(rc::toString(r.rayKind()));
+        case 4: return r.deferred() ? QString("?") : objectLabel(state_->scene(), r.hit);
+        case 5: return decisionText(r);
+        case 6: return r.tests;
+    }
+    return {};
+}
+
+}  // namespace rcgui

@@ -1,0 +1,53 @@
+#include "event_log_panel.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "event_log_model.h"
+
+namespace rcgui {
+
+EventLogPanel::EventLogPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    auto* row = new QHBoxLayout;
+    missesOnly_ = new QCheckBox("Misses only", this);
+    follow_ = new QCheckBox("Follow", this);
+    follow_->setChecked(true);
+    row->addWidget(missesOnly_);
+    row->addWidget(follow_);
+    row->addStretch(1);
+    layout->addLayout(row);
+    model_ = new EventLogModel(this);
+    table_ = new QTableView(this);
+    table_->setModel(model_);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    table_->verticalHeader()->hide();
+    table_->horizontalHeader()->setStretchLastSection(true);
+    layout->addWidget(table_, 1);
+    connect(missesOnly_, &QCheckBox::toggled, this, &EventLogPanel::setMissesOnly);
+    connect(table_, &QTableView::activated, this, [this](const QModelIndex& i) {
+        const int e = model_->eventAt(i.row());
+        if (e >= 0) emit eventChosen(e);
+    });
+    connect(table_, &QTableView::clicked, this, [this](const QModelIndex& i) {
+        const int e = model_->eventAt(i.row());
+        if (e >= 0) emit eventChosen(e);
+    });
+}
+
+void EventLogPanel::setMissesOnly(bool on) {
+    if (missesOnly_->isChecked() != on) missesOnly_->setChecked(on);
+    model_->setMissesOnly(on);
+}
+
+void EventLogPanel::refresh(const SessionState* state) {
+    model_->setState(state);
+    if (follow_->isChecked() && model_->rowCount() > 0) table_->scrollToBottom();
+}
+
+}  // namespace rcgui

@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// \brief Dock panel: the event log, filterable to cache misses.
+#include <QWidget>
+
+class QCheckBox;
+class QTableView;
+
+namespace rcgui {
+
+class EventLogModel;
+class SessionState;
+
+/// A table of trace events with a "misses only" filter; activating a row selects its
+/// pixel and ray.
+class EventLogPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit EventLogPanel(QWidget* parent = nullptr);
+    void refresh(const SessionState* state);
+    EventLogModel* model() const { return model_; }
+    void setMissesOnly(bool on);
+
+signals:
+    /// A row was activated: the recorder index of its event.
+    void eventChosen(int event);
+
+private:
+    EventLogModel* model_;
+    QTableView* table_;
+    QCheckBox* missesOnly_;
+    QCheckBox* follow_;
+};
+
+}  // namespace rcgui

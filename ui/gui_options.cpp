@@ -1,0 +1,107 @@
+#include "gui_options.h"
+
+#include <QCommandLineParser>
+
+namespace rcgui {
+
+namespace {
+bool parseInt(const QString& s, int lo, int hi, int& out) {
+    bool ok = false;
+    const int v = s.toInt(&ok);
+    if (!ok || v < lo || v > hi) return false;
+    out = v;
+    return true;
+}
+bool parsePair(const QString& s, QChar sep, int& a, int& b) {
+    const QStringList parts = s.split(sep);
+    return parts.size() == 2 && parseInt(parts[0], 0, 100000, a) && parseInt(parts[1], 0, 100000, b);
+}
+}  // namespace
+
+ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message) {
+    QCommandLineParser p;
+    p.setApplicationDescription(
+        "RayCache: step through ray tracing ray by ray, with Hanrahan's (1986) blocker lists,\n"
+        "Speer-DeRose-Barsky cylinders of safety and the breadth-first frontier drawn on the image.\n"
+        "With no display (and no QT_QPA_PLATFORM), renders headless to a PNG and exits.");
+    p.addPositionalArgument("scene", "an .nff file or a built-in such as cube:4 (default cube:4)", "[scene]");
+    const QCommandLineOption help({"h", "help"}, "Show this help.");
+    const QCommandLineOption cache("cache", "none | cylinder | blocker (default blocker)", "kind");
+    const QCommandLineOption order("order", "scanline | progressive | bfs (default bfs)", "kind");
+    const QCommandLineOption width("width", "image width (default: the scene's)", "W");
+    const QCommandLineOption height("height", "image height (default: the scene's)", "H");
+    const QCommandLineOption steps("steps", "rays to trace before showing (screenshots: default 20000)", "N");
+    const QCommandLineOption overlays("overlays", "cylinder,cone,frontier,misses (or all, none, grid)", "list");
+    const QCommandLineOption heatmap("heatmap", "none | tests | hitmiss | order | beam", "mode");
+    const QCommandLineOption screenshot("screenshot", "write the window to this PNG and exit", "file");
+    const QCommandLineOption window("window", "window size of screenshots (default 1600x1000)", "WxH");
+    const QCommandLineOption select("select", "pixel to inspect", "x,y");
+    const QCommandLineOption zoom("zoom", "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel", "F");
+    const QCommandLineOption large("large-fonts", "bigger text, for a projector");
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, zoom, large})
+        p.addOption(o);
+    if (!p.parse(args)) {
+        message = p.errorText();
+        return ParseResult::Error;
+    }
+    if (p.isSet(help)) {
+        message = p.helpText();
+        return ParseResult::Help;
+    }
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() > 1) {
+        message = "only one scene may be given";
+        return ParseResult::Error;
+    }
+    if (pos.size() == 1) {
+        out.scene = pos[0];
+        out.sceneGiven = true;
+    }
+    if (p.isSet(cache)) {
+        const auto k = rc::parseCacheKind(p.value(cache).toStdString());
+        if (!k) { message = "--cache must be none, cylinder or blocker, not '" + p.value(cache) + "'"; return ParseResult::Error; }
+        out.cache = *k;
+    }
+    if (p.isSet(order)) {
+        const auto k = rc::parseOrderKind(p.value(order).toStdString());
+        if (!k) { message = "--order must be scanline, progressive or bfs, not '" + p.value(order) + "'"; return ParseResult::Error; }
+        out.order = *k;
+    }
+    if (p.isSet(width) && !parseInt(p.value(width), 1, 16384, out.width)) { message = "--width must be an integer in [1, 16384]"; return ParseResult::Error; }
+    if (p.isSet(height) && !parseInt(p.value(height), 1, 16384, out.height)) { message = "--height must be an integer in [1, 16384]"; return ParseResult::Error; }
+    if (p.isSet(steps)) {
+        bool ok = false;
+        out.steps = p.value(steps).toLongLong(&ok);
+        if (!ok || out.steps < 0) { message = "--steps must be a non-negative integer"; return ParseResult::Error; }
+    }
+    if (p.isSet(overlays)) {
+        const auto o = Overlays::parse(p.value(overlays));
+        if (!o) { message = "--overlays takes a comma-separated list of cylinder, cone, frontier, misses, grid, all, none"; return ParseResult::Error; }
+        out.overlays = *o;
+    }
+    if (p.isSet(heatmap)) {
+        const auto h = parseHeatmap(p.value(heatmap));
+        if (!h) { message = "--heatmap must be none, tests, hitmiss, order or beam"; return ParseResult::Error; }
+        out.heatmap = *h;
+    }
+    if (p.isSet(screenshot)) out.screenshot = p.value(screenshot);
+    if (p.isSet(window)) {
+        int w = 0, h = 0;
+        if (!parsePair(p.value(window).toLower(), 'x', w, h) || w < 200 || h < 200) { message = "--window must be WxH, at least 200x200"; return ParseResult::Error; }
+        out.window = QSize(w, h);
+    }
+    if (p.isSet(select)) {
+        int x = 0, y = 0;
+        if (!parsePair(p.value(select), ',', x, y)) { message = "--select must be x,y"; return ParseResult::Error; }
+        out.select = QPoint(x, y);
+    }
+    if (p.isSet(zoom)) {
+        bool ok = false;
+        out.zoom = p.value(zoom).toDouble(&ok);
+        if (!ok || out.zoom < 0.1 || out.zoom > 200) { message = "--zoom must be a number in [0.1, 200]"; return ParseResult::Error; }
+    }
+    out.largeFonts = p.isSet(large);
+    return ParseResult::Ok;
+}
+
+}  // namespace rcgui

@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// \brief The command line of raycache-gui.
+#include <QPoint>
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include "overlay_options.h"
+#include "render/render_session.h"
+
+namespace rcgui {
+
+/// What the command line asks for.
+struct GuiOptions {
+    QString scene = "cube:4";
+    rc::CacheKind cache = rc::CacheKind::Blocker;
+    rc::OrderKind order = rc::OrderKind::BreadthFirst;
+    int width = 0, height = 0;   ///< image size; 0: the scene's
+    qint64 steps = -1;           ///< rays to trace first (-1: none, or 20000 for screenshots)
+    Overlays overlays;
+    Heatmap heatmap = Heatmap::None;
+    QString screenshot;          ///< PNG to write, then exit
+    QSize window{1600, 1000};    ///< window size of screenshots
+    QPoint select{-1, -1};       ///< pixel to inspect
+    double zoom = 1.0;           ///< screenshots: zoom relative to "fit", about the ray being traced
+    bool largeFonts = false;
+    bool sceneGiven = false;
+};
+
+/// The outcome of parsing.
+enum class ParseResult { Ok, Help, Error };
+
+/// Parses `args` (argv, program name first). On Help, `message` is the help text; on
+/// Error, it says what is wrong.
+ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message);
+
+}  // namespace rcgui

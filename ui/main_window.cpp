@@ -1,0 +1,440 @@
+#include "main_window.h"
+
+#include <cmath>
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSlider>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include "cache_tree_panel.h"
+#include "event_log_panel.h"
+#include "heatmap_builder.h"
+#include "image_view.h"
+#include "labels.h"
+#include "objects_panel.h"
+#include "ray_tree_panel.h"
+#include "scene/builtin_scenes.h"
+#include "stats_panel.h"
+
+namespace rcgui {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowTitle("RayCache — caching and breadth-first search (Hanrahan 1986)");
+    options_.cache = rc::CacheKind::Blocker;
+    options_.order = rc::OrderKind::BreadthFirst;
+    reportError_ = [this](const QString& title, const QString& message) {
+        QMessageBox::critical(this, title, message);
+    };
+    view_ = new ImageView(this);
+    setCentralWidget(view_);
+    view_->setOverlayHook([this](QPainter& p, double scale) {
+        if (const SessionState* s = controller_.state()) overlayPainter_.paint(p, *s, overlays_, selection_, scale);
+    });
+    view_->setLegendHook([this](QPainter& p, const QRectF& area) {
+        if (const SessionState* s = controller_.state()) overlayPainter_.paintLegend(p, *s, overlays_, selection_, area);
+    });
+    connect(view_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
+    connect(view_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
+
+    buildToolbars();
+    buildDocks();
+
+    connect(&controller_, &SessionController::changed, this, &MainWindow::refresh);
+    connect(&controller_, &SessionController::busyChanged, this, &MainWindow::onBusyChanged);
+    connect(&controller_, &SessionController::snapshot, this, [this](const QImage& img, qint64 steps, double progress) {
+        view_->setImage(img);
+        stats_->showProgress(steps, progress);
+        statusBar()->showMessage(QString("running… %1 steps").arg(steps));
+    });
+    connect(&controller_, &SessionController::finished, this, [this](bool completed) {
+        statusBar()->showMessage(completed ? "run finished" : "run cancelled", 5000);
+    });
+    playTimer_.setInterval(33);
+    connect(&playTimer_, &QTimer::timeout, this, &MainWindow::onPlayTick);
+    resize(1400, 900);
+    updateControls();
+}
+
+MainWindow::~MainWindow() {
+    controller_.cancel();
+    controller_.wait();
+}
+
+void MainWindow::buildToolbars() {
+    // Scene and render choices
+    QToolBar* render = addToolBar("Render");
+    render->setObjectName("render");
+    sceneBox_ = new QComboBox(this);
+    for (const rc::BuiltinInfo& b : rc::builtinScenes()) {
+        const QString name = QString::fromStdString(b.name);
+        const QString spec = name.contains(":N") ? QString(name).replace(":N", ":4") : name;
+        sceneBox_->addItem(spec, spec);
+        sceneBox_->setItemData(sceneBox_->count() - 1, QString::fromStdString(b.description), Qt::ToolTipRole);
+    }
+    sceneBox_->setToolTip("Scene: built-ins, or files opened with Open…");
+    render->addWidget(new QLabel(" Scene ", this));
+    render->addWidget(sceneBox_);
+    openAct_ = render->addAction("Open…", this, &MainWindow::openSceneDialog);
+    openAct_->setShortcut(QKeySequence::Open);
+    connect(sceneBox_, &QComboBox::activated, this, [this](int i) { loadScene(sceneBox_->itemData(i).toString()); });
+
+    cacheBox_ = new QComboBox(this);
+    for (auto k : {rc::CacheKind::None, rc::CacheKind::Cylinder, rc::CacheKind::Blocker})
+        cacheBox_->addItem(text(rc::toString(k)), int(k));
+    cacheBox_->setCurrentIndex(2);
+    render->addWidget(new QLabel(" Cache ", this));
+    render->addWidget(cacheBox_);
+    connect(cacheBox_, &QComboBox::activated, this, [this](int i) { setCache(rc::CacheKind(cacheBox_->itemData(i).toInt())); });
+
+    orderBox_ = new QComboBox(this);
+    for (auto k : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
+        orderBox_->addItem(text(rc::toString(k)), int(k));
+    orderBox_->setCurrentIndex(2);
+    orderBox_->setToolTip("progressive: all eye rays first, then deeper rays (the paper's conclusion)");
+    render->addWidget(new QLabel(" Order ", this));
+    render->addWidget(orderBox_);
+    connect(orderBox_, &QComboBox::activated, this, [this](int i) { setOrder(rc::OrderKind(orderBox_->itemData(i).toInt())); });
+
+    sizeBox_ = new QComboBox(this);
+    sizeBox_->addItem("scene's", 0);
+    for (int n : {32, 64, 128, 256, 512, 1024}) sizeBox_->addItem(QString::number(n), n);
+    render->addWidget(new QLabel(" Size ", this));
+    render->addWidget(sizeBox_);
+    connect(sizeBox_, &QComboBox::activated, this, [this](int i) {
+        sizeChoice_ = sizeBox_->itemData(i).toInt();
+        resetSession();
+    });
+    resetAct_ = render->addAction("Reset", this, &MainWindow::resetSession);
+
+    // Stepping
+    addToolBarBreak();
+    QToolBar* step = addToolBar("Step");
+    step->setObjectName("step");
+    stepRayAct_ = step->addAction("Step ray", this, &MainWindow::stepRay);
+    stepRayAct_->setShortcut(Qt::Key_Space);
+    stepRayAct_->setToolTip("Trace exactly one ray (Space)");
+    stepPixelAct_ = step->addAction("Step pixel", this, &MainWindow::stepPixel);
+    stepPixelAct_->setToolTip("Trace until a ray of another pixel is traced");
+    nextMissAct_ = step->addAction("Next miss", this, &MainWindow::runToNextMiss);
+    nextMissAct_->setShortcut(Qt::Key_M);
+    backAct_ = step->addAction("Step back", this, &MainWindow::stepBack);
+    backAct_->setShortcut(Qt::Key_Backspace);
+    backAct_->setToolTip("Rebuild and replay to one step before (the core is deterministic)");
+    playAct_ = step->addAction("Play");
+    playAct_->setCheckable(true);
+    connect(playAct_, &QAction::toggled, this, &MainWindow::setPlaying);
+    speed_ = new QSlider(Qt::Horizontal, this);
+    speed_->setRange(0, 100);
+    speed_->setValue(40);
+    speed_->setMaximumWidth(160);
+    speedLabel_ = new QLabel(this);
+    auto showSpeed = [this](int v) { speedLabel_->setText(QString(" %1 rays/s ").arg(std::round(std::pow(10.0, v / 25.0)))); };
+    showSpeed(speed_->value());
+    connect(speed_, &QSlider::valueChanged, this, showSpeed);
+    step->addWidget(speed_);
+    step->addWidget(speedLabel_);
+    runAct_ = step->addAction("Run to end", this, &MainWindow::runToEnd);
+    cancelAct_ = step->addAction("Cancel", this, &MainWindow::cancelRun);
+    cancelAct_->setShortcut(Qt::Key_Escape);
+
+    // What to show
+    QToolBar* show = addToolBar("Show");
+    show->setObjectName("show");
+    auto box = [&](const QString& label, const QString& tip, bool Overlays::*field) {
+        auto* c = new QCheckBox(label, this);
+        c->setToolTip(tip);
+        c->setChecked(overlays_.*field);
+        connect(c, &QCheckBox::toggled, this, [this, field](bool on) {
+            overlays_.*field = on;
+            view_->setGridEnabled(overlays_.grid);
+            view_->update();
+        });
+        show->addWidget(c);
+        return c;
+    };
+    cylinderBox_ = box("Cylinder", "Cylinder of safety of the active cache entry", &Overlays::cylinder);
+    hullBox_ = box("Hull", "Blocker hull of origin and target, its blockers (orange) and target (green)", &Overlays::hull);
+    frontierBox_ = box("Frontier", "Breadth-first queue, deferred seeds and regions", &Overlays::frontier);
+    missesBox_ = box("Misses", "Where misses happened, coloured by reason", &Overlays::misses);
+    gridBox_ = box("Grid", "Pixel grid at high zoom", &Overlays::grid);
+    heatmapBox_ = new QComboBox(this);
+    heatmapBox_->addItem("image", int(Heatmap::None));
+    heatmapBox_->addItem("tests per pixel", int(Heatmap::Tests));
+    heatmapBox_->addItem("hits / misses", int(Heatmap::HitMiss));
+    heatmapBox_->addItem("visiting order", int(Heatmap::VisitOrder));
+    heatmapBox_->addItem("beam-tree node", int(Heatmap::BeamNode));
+    show->addWidget(new QLabel(" Show ", this));
+    show->addWidget(heatmapBox_);
+    connect(heatmapBox_, &QComboBox::activated, this, [this](int i) { setHeatmap(Heatmap(heatmapBox_->itemData(i).toInt())); });
+    QAction* large = show->addAction("Large fonts");
+    large->setCheckable(true);
+    large->setToolTip("Bigger text for a projector");
+    connect(large, &QAction::toggled, this, &MainWindow::setLargeFonts);
+    QAction* fit = show->addAction("Fit", view_, &ImageView::fit);
+    fit->setToolTip("Fit the image to the window (F)");
+}
+
+void MainWindow::buildDocks() {
+    auto dock = [&](const QString& title, QWidget* w, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(title);
+        d->setWidget(w);
+        addDockWidget(area, d);
+        return d;
+    };
+    rayTree_ = new RayTreePanel(this);
+    cacheTree_ = new CacheTreePanel(this);
+    stats_ = new StatsPanel(this);
+    eventLog_ = new EventLogPanel(this);
+    objects_ = new ObjectsPanel(this);
+    QDockWidget* rt = dock("Ray tree", rayTree_, Qt::RightDockWidgetArea);
+    QDockWidget* ct = dock("Cache tree", cacheTree_, Qt::RightDockWidgetArea);
+    dock("Statistics", stats_, Qt::RightDockWidgetArea);
+    QDockWidget* log = dock("Event log", eventLog_, Qt::BottomDockWidgetArea);
+    QDockWidget* obj = dock("Objects", objects_, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(rt, ct);
+    rt->raise();
+    tabifyDockWidget(log, obj);
+    log->raise();
+    resizeDocks({rt}, {520}, Qt::Horizontal);
+    resizeDocks({log}, {180}, Qt::Vertical);
+    connect(rayTree_, &RayTreePanel::rayChosen, this, [this](int event) {
+        selection_.event = event;
+        view_->update();
+    });
+    connect(eventLog_, &EventLogPanel::eventChosen, this, [this](int event) {
+        const SessionState* s = controller_.state();
+        if (!s) return;
+        const int pixel = s->recorder().events()[event].pixel;
+        selectPixel(pixel % s->width(), pixel / s->width());
+        selection_.event = event;
+        view_->update();
+    });
+    connect(objects_, &ObjectsPanel::objectChosen, this, &MainWindow::selectObject);
+}
+
+bool MainWindow::loadScene(const QString& spec) {
+    std::shared_ptr<const rc::Scene> scene;
+    try {
+        scene = std::make_shared<const rc::Scene>(rc::loadScene(spec.toStdString()));
+    } catch (const std::exception& e) {
+        reportError_("Cannot open scene", QString::fromUtf8(e.what()));
+        // Keep the current scene, and show it as the current choice again
+        if (scene_) {
+            const int i = sceneBox_->findData(QString::fromStdString(scene_->name));
+            if (i >= 0) sceneBox_->setCurrentIndex(i);
+        }
+        return false;
+    }
+    scene_ = std::move(scene);
+    QString key = spec;
+    if (QFileInfo::exists(spec)) key = QFileInfo(spec).absoluteFilePath();
+    int i = sceneBox_->findData(key);
+    if (i < 0) {
+        sceneBox_->addItem(QFileInfo::exists(spec) ? QFileInfo(spec).fileName() : spec, key);
+        i = sceneBox_->count() - 1;
+    }
+    sceneBox_->setCurrentIndex(i);
+    objects_->setScene(scene_.get());
+    selection_ = {};
+    resetSession();
+    return true;
+}
+
+void MainWindow::openSceneDialog() {
+    const QString file = QFileDialog::getOpenFileName(this, "Open NFF scene", QString(), "NFF scenes (*.nff);;All files (*)");
+    if (!file.isEmpty()) loadScene(file);
+}
+
+void MainWindow::setCache(rc::CacheKind k) {
+    options_.cache = k;
+    cacheBox_->setCurrentIndex(cacheBox_->findData(int(k)));
+    resetSession();
+}
+
+void MainWindow::setOrder(rc::OrderKind k) {
+    options_.order = k;
+    orderBox_->setCurrentIndex(orderBox_->findData(int(k)));
+    resetSession();
+}
+
+void MainWindow::setImageSize(int width, int height) {
+    options_.width = width;
+    options_.height = height;
+    sizeChoice_ = -1;
+    resetSession();
+}
+
+void MainWindow::resetSession() {
+    if (!scene_) return;
+    setPlaying(false);
+    // The image size may change: pixels selected in the old render mean nothing now
+    selection_.pixel = selection_.event = -1;
+    rc::RenderOptions o = options_;
+    if (sizeChoice_ >= 0) {
+        o.width = o.height = 0;
+        if (sizeChoice_ > 0) {
+            const int w = scene_->camera.width, h = scene_->camera.height;
+            const double longer = std::max(w, h);
+            o.width = std::max(1, int(std::lround(sizeChoice_ * w / longer)));
+            o.height = std::max(1, int(std::lround(sizeChoice_ * h / longer)));
+        }
+    }
+    try {
+        controller_.reset({scene_, o});
+    } catch (const std::exception& e) {
+        reportError_("Cannot start the render", QString::fromUtf8(e.what()));
+    }
+    updateControls();
+}
+
+void MainWindow::setOverlays(const Overlays& o) {
+    overlays_ = o;
+    const QSignalBlocker b1(cylinderBox_), b2(hullBox_), b3(frontierBox_), b4(missesBox_), b5(gridBox_);
+    cylinderBox_->setChecked(o.cylinder);
+    hullBox_->setChecked(o.hull);
+    frontierBox_->setChecked(o.frontier);
+    missesBox_->setChecked(o.misses);
+    gridBox_->setChecked(o.grid);
+    view_->setGridEnabled(o.grid);
+    view_->update();
+}
+
+void MainWindow::setHeatmap(Heatmap h) {
+    heatmap_ = h;
+    heatmapBox_->setCurrentIndex(heatmapBox_->findData(int(h)));
+    refresh();
+}
+
+void MainWindow::setLargeFonts(bool on) {
+    QFont f = QApplication::font();
+    f.setPointSizeF(on ? 16.0 : 10.0);
+    QApplication::setFont(f);
+    for (QWidget* w : findChildren<QWidget*>()) w->setFont(f);
+    view_->setFont(f);
+    view_->update();
+}
+
+void MainWindow::selectPixel(int x, int y) {
+    const SessionState* s = controller_.state();
+    if (!s || x < 0 || y < 0 || x >= s->width() || y >= s->height()) {
+        selection_.pixel = -1;
+    } else {
+        selection_.pixel = y * s->width() + x;
+        statusBar()->showMessage(QString("pixel (%1, %2)").arg(x).arg(y));
+    }
+    selection_.event = -1;
+    rayTree_->showPixel(s, selection_.pixel);
+    view_->update();
+}
+
+void MainWindow::selectObject(int object) {
+    selection_.object = object;
+    view_->update();
+}
+
+void MainWindow::stepRay() { controller_.stepRay(); }
+void MainWindow::stepPixel() { controller_.start(RunGoal::NextPixel); }
+void MainWindow::runToNextMiss() { controller_.start(RunGoal::NextMiss); }
+void MainWindow::runToEnd() {
+    setPlaying(false);
+    controller_.start(RunGoal::ToEnd);
+}
+void MainWindow::stepBack() {
+    setPlaying(false);
+    controller_.stepBack();
+}
+void MainWindow::cancelRun() {
+    setPlaying(false);
+    controller_.cancel();
+}
+
+void MainWindow::setPlaying(bool on) {
+    if (playAct_ && playAct_->isChecked() != on) {
+        playAct_->setChecked(on);  // comes back here through toggled()
+        return;
+    }
+    playCredit_ = 0.0;
+    if (on) playTimer_.start();
+    else playTimer_.stop();
+    if (playAct_) playAct_->setText(on ? "Pause" : "Play");
+}
+
+void MainWindow::onPlayTick() {
+    SessionState* s = controller_.state();
+    if (!s) return;
+    const double perSecond = std::pow(10.0, speed_->value() / 25.0);
+    playCredit_ += perSecond * playTimer_.interval() / 1000.0;
+    int n = int(playCredit_);
+    playCredit_ -= n;
+    if (n == 0) return;
+    bool more = true;
+    while (n-- > 0 && (more = s->step())) {}
+    if (!more) setPlaying(false);
+    refresh();
+}
+
+int MainWindow::beamPath() const {
+    if (const SessionState* s = controller_.state())
+        if (const auto& e = s->recorder().lastCommitted()) return e->task.node;
+    return 0;
+}
+
+void MainWindow::refresh() {
+    const SessionState* s = controller_.state();
+    if (!s) return;
+    view_->setImage(HeatmapBuilder::build(*s, heatmap_, beamPath()));
+    stats_->refresh(s);
+    cacheTree_->refresh(s);
+    eventLog_->refresh(s);
+    // The ray tree follows the selected pixel, else the pixel being traced
+    int pixel = selection_.pixel;
+    if (pixel < 0 && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
+    const int chosen = selection_.event;
+    rayTree_->showPixel(s, pixel);
+    selection_.event = chosen;
+    statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
+    updateControls();
+}
+
+void MainWindow::onBusyChanged(bool busy) {
+    if (busy) {
+        // The worker owns the state now: let go of every view of it
+        eventLog_->refresh(nullptr);
+        rayTree_->showPixel(nullptr, -1);
+    }
+    updateControls();
+    view_->update();
+}
+
+void MainWindow::updateControls() {
+    const bool busy = controller_.busy();
+    const SessionState* s = controller_.state();
+    const bool canStep = !busy && s && !s->session().done();
+    for (QAction* a : {stepRayAct_, stepPixelAct_, nextMissAct_, runAct_}) if (a) a->setEnabled(canStep);
+    if (playAct_) playAct_->setEnabled(canStep || playTimer_.isActive());
+    if (backAct_) backAct_->setEnabled(!busy && s && s->session().steps() > 0);
+    if (cancelAct_) cancelAct_->setEnabled(busy);
+    for (QWidget* w : std::initializer_list<QWidget*>{sceneBox_, cacheBox_, orderBox_, sizeBox_}) if (w) w->setEnabled(!busy);
+    if (resetAct_) resetAct_->setEnabled(true);
+    if (openAct_) openAct_->setEnabled(!busy);
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    setPlaying(false);
+    controller_.cancel();
+    controller_.wait();
+    e->accept();
+}
+
+}  // namespace rcgui

@@ -1,0 +1,121 @@
+#pragma once
+/// \file
+/// \brief The main window: the image view, the stepping toolbar, overlay toggles and
+/// the dock panels, around one SessionController.
+#include <functional>
+#include <memory>
+
+#include <QMainWindow>
+#include <QTimer>
+
+#include "overlay_options.h"
+#include "overlay_painter.h"
+#include "session_controller.h"
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QSlider;
+
+namespace rcgui {
+
+class CacheTreePanel;
+class EventLogPanel;
+class ImageView;
+class ObjectsPanel;
+class RayTreePanel;
+class StatsPanel;
+
+/// The RayCache window. Every action is also a public slot, so tests and the
+/// screenshot mode drive the window exactly as a user would.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// Shows an error to the user. The default opens a modal QMessageBox; tests and the
+    /// headless mode install their own.
+    using ErrorReporter = std::function<void(const QString& title, const QString& message)>;
+
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    void setErrorReporter(ErrorReporter r) { reportError_ = std::move(r); }
+
+    /// Loads a built-in scene spec or an NFF file and starts a new render of it. On an
+    /// error, reports it (file:line:column: message) and keeps the current scene.
+    bool loadScene(const QString& spec);
+    /// The scene being rendered (null before the first load).
+    const rc::Scene* scene() const { return scene_.get(); }
+    void setCache(rc::CacheKind k);
+    void setOrder(rc::OrderKind k);
+    /// Image size; 0 x 0 means the scene's own.
+    void setImageSize(int width, int height);
+    void setOverlays(const Overlays& o);
+    const Overlays& overlays() const { return overlays_; }
+    void setHeatmap(Heatmap h);
+    void setLargeFonts(bool on);
+    /// Selects a pixel to inspect (-1, -1 clears).
+    void selectPixel(int x, int y);
+    void selectObject(int object);
+    const Selection& selection() const { return selection_; }
+
+    SessionController& controller() { return controller_; }
+    ImageView* imageView() const { return view_; }
+    RayTreePanel* rayTreePanel() const { return rayTree_; }
+    EventLogPanel* eventLogPanel() const { return eventLog_; }
+
+public slots:
+    /// Rebuilds the render from the current scene and choices.
+    void resetSession();
+    void stepRay();
+    void stepPixel();
+    void runToNextMiss();
+    void runToEnd();
+    void stepBack();
+    void cancelRun();
+    void setPlaying(bool on);
+    void openSceneDialog();
+    /// Refreshes the picture and every panel from the state.
+    void refresh();
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+
+private:
+    void buildToolbars();
+    void buildDocks();
+    void onBusyChanged(bool busy);
+    void onPlayTick();
+    void updateControls();
+    int beamPath() const;
+
+    SessionController controller_;
+    std::shared_ptr<const rc::Scene> scene_;
+    rc::RenderOptions options_;
+    int sizeChoice_ = 0;  ///< 0: the scene's size, else the longer side
+    Overlays overlays_;
+    Heatmap heatmap_ = Heatmap::None;
+    Selection selection_;
+    OverlayPainter overlayPainter_;
+    ErrorReporter reportError_;
+    QTimer playTimer_;
+    double playCredit_ = 0.0;
+
+    ImageView* view_ = nullptr;
+    RayTreePanel* rayTree_ = nullptr;
+    class CacheTreePanel* cacheTree_ = nullptr;
+    StatsPanel* stats_ = nullptr;
+    EventLogPanel* eventLog_ = nullptr;
+    ObjectsPanel* objects_ = nullptr;
+    QComboBox *sceneBox_ = nullptr, *cacheBox_ = nullptr, *orderBox_ = nullptr, *sizeBox_ = nullptr,
+              *heatmapBox_ = nullptr;
+    QCheckBox *cylinderBox_ = nullptr, *hullBox_ = nullptr, *frontierBox_ = nullptr, *missesBox_ = nullptr,
+              *gridBox_ = nullptr;
+    QSlider* speed_ = nullptr;
+    QLabel* speedLabel_ = nullptr;
+    QAction *stepRayAct_ = nullptr, *stepPixelAct_ = nullptr, *nextMissAct_ = nullptr, *playAct_ = nullptr,
+            *runAct_ = nullptr, *cancelAct_ = nullptr, *resetAct_ = nullptr, *backAct_ = nullptr,
+            *openAct_ = nullptr;
+};
+
+}  // namespace rcgui

@@ -1,0 +1,73 @@
+#include "screenshot.h"
+
+#include <QApplication>
+#include <QPixmap>
+
+#include "image_view.h"
+#include "session_state.h"
+#include "main_window.h"
+
+namespace rcgui {
+
+bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
+    bool ok = true;
+    w.setErrorReporter([&](const QString& title, const QString& message) {
+        err << "raycache-gui: " << title.toLower() << ": " << message << Qt::endl;
+        ok = false;
+    });
+    if (o.largeFonts) w.setLargeFonts(true);
+    w.setOverlays(o.overlays);
+    // Choose everything first, then load: one session is built, with these choices
+    w.setCache(o.cache);
+    w.setOrder(o.order);
+    if (o.width > 0 || o.height > 0) w.setImageSize(o.width, o.height);
+    if (!w.loadScene(o.scene) || !ok) {
+        w.setErrorReporter([&err](const QString&, const QString& message) { err << message << Qt::endl; });
+        return false;
+    }
+    if (o.steps > 0) {
+        if (SessionState* s = w.controller().state()) s->runUntil(RunGoal::ToStep, o.steps);
+    }
+    w.setHeatmap(o.heatmap);
+    w.refresh();
+    if (o.select.x() >= 0) w.selectPixel(o.select.x(), o.select.y());
+    // `ok` dies with this call: later errors only go to the stream
+    w.setErrorReporter([&err](const QString& title, const QString& message) {
+        err << "raycache-gui: " << title.toLower() << ": " << message << Qt::endl;
+    });
+    return true;
+}
+
+int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err) {
+    MainWindow w;
+    GuiOptions opts = o;
+    if (opts.steps < 0) opts.steps = 20000;
+    if (!applyOptions(w, opts, err)) return 2;
+    w.resize(opts.window);
+    w.show();
+    QApplication::processEvents();
+    ImageView* view = w.imageView();
+    view->fit();
+    if (opts.zoom != 1.0) {
+        // Zoom about the selected pixel, else the pixel of the ray being traced
+        QPointF centre(view->image().width() / 2.0, view->image().height() / 2.0);
+        const SessionState* s = w.controller().state();
+        int pixel = w.selection().pixel;
+        if (pixel < 0 && s && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
+        if (s && pixel >= 0) centre = QPointF(pixel % s->width() + 0.5, pixel / s->width() + 0.5);
+        const double z = view->zoom() * opts.zoom;
+        view->setZoom(z, QPointF(view->width() / 2.0, view->height() / 2.0) - z * centre);
+    }
+    QApplication::processEvents();
+    const QPixmap shot = w.grab();
+    if (shot.isNull() || !shot.save(opts.screenshot, "PNG")) {
+        err << "raycache-gui: cannot write " << opts.screenshot << Qt::endl;
+        return 1;
+    }
+    const SessionState* s = w.controller().state();
+    out << "raycache-gui: wrote " << opts.screenshot << " (" << opts.scene << ", "
+        << (s ? s->session().steps() : 0) << " steps, " << shot.width() << "x" << shot.height() << ")" << Qt::endl;
+    return 0;
+}
+
+}  // namespace rcgui

@@ -1,0 +1,21 @@
+#pragma once
+/// \file
+/// \brief Headless mode: build the window, trace N rays, write the window to a PNG.
+#include <QTextStream>
+
+#include "gui_options.h"
+
+namespace rcgui {
+
+class MainWindow;
+
+/// Applies the command line's choices to a window: scene, cache, order, size, the
+/// first `steps` rays, overlays, heatmap, selection. Errors go to `err`; returns false
+/// on a bad scene (the caller exits with status 2).
+bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err);
+
+/// Renders `o.screenshot` and returns the process exit status: 0 when written, 2 for a
+/// bad scene, 1 when the PNG cannot be written.
+int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err);
+
+}  // namespace rcgui

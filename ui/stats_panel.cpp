@@ -1,0 +1,96 @@
+#include "stats_panel.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QLabel>
+#include <QLineSeries>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include "labels.h"
+#include "session_state.h"
+
+namespace rcgui {
+
+StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    text_ = new QLabel(this);
+    text_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    text_->setWordWrap(true);
+    layout->addWidget(text_);
+    chart_ = new QChart;
+    hits_ = new QLineSeries;
+    hits_->setName("hits");
+    hits_->setColor(QColor(0, 158, 115));
+    misses_ = new QLineSeries;
+    misses_->setName("misses");
+    misses_->setColor(QColor(213, 94, 0));
+    tests_ = new QLineSeries;
+    tests_->setName("tests (right)");
+    tests_->setColor(QColor(0, 114, 178));
+    for (QLineSeries* s : {hits_, misses_, tests_}) chart_->addSeries(s);
+    axisX_ = new QValueAxis;
+    axisX_->setTitleText("steps");
+    axisX_->setLabelFormat("%.0f");
+    axisY_ = new QValueAxis;
+    axisY_->setLabelFormat("%.0f");
+    axisTests_ = new QValueAxis;
+    axisTests_->setLabelFormat("%.0f");
+    chart_->addAxis(axisX_, Qt::AlignBottom);
+    chart_->addAxis(axisY_, Qt::AlignLeft);
+    chart_->addAxis(axisTests_, Qt::AlignRight);
+    for (QLineSeries* s : {hits_, misses_, tests_}) s->attachAxis(axisX_);
+    hits_->attachAxis(axisY_);
+    misses_->attachAxis(axisY_);
+    tests_->attachAxis(axisTests_);
+    chart_->legend()->setAlignment(Qt::AlignBottom);
+    chart_->setMargins(QMargins(2, 2, 2, 2));
+    auto* view = new QChartView(chart_, this);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumHeight(200);
+    layout->addWidget(view, 1);
+}
+
+void StatsPanel::showProgress(qint64 steps, double progress) {
+    text_->setText(QString("running… %1 steps, %2% of the eye rays").arg(steps).arg(progress * 100.0, 0, 'f', 1));
+}
+
+void StatsPanel::refresh(const SessionState* state) {
+    if (!state) return;
+    const rc::RenderSession& s = state->session();
+    const rc::Counters& n = s.counters();
+    const double rays = std::max<double>(1.0, double(n.totalRays()));
+    QString t = QString("<b>steps</b> %1 %2<br><b>rays</b> %3 (eye %4, shadow %5, reflection %6, refraction %7)<br>"
+                        "<b>tests</b> %8 (%9 per ray), <b>complete searches</b> %10<br>"
+                        "<b>hits</b> %11, <b>misses</b> %12, <b>deferrals</b> %13")
+                    .arg(s.steps()).arg(s.done() ? "(done)" : "")
+                    .arg(n.totalRays()).arg(n.rays[0]).arg(n.rays[1]).arg(n.rays[2]).arg(n.rays[3])
+                    .arg(n.intersectionTests).arg(double(n.intersectionTests) / rays, 0, 'f', 2)
+                    .arg(n.completeSearches).arg(n.hits).arg(n.misses).arg(n.deferrals);
+    QStringList reasons;
+    for (int r = 1; r < rc::kMissReasons; ++r)
+        if (n.missReasons[r]) reasons << QString("%1 %2").arg(text(rc::toString(rc::MissReason(r)))).arg(n.missReasons[r]);
+    if (!reasons.isEmpty()) t += "<br><b>miss reasons</b> " + reasons.join(", ");
+    if (n.blockerListsBuilt)
+        t += QString("<br><b>blocker lists</b> %1 built, longest %2").arg(n.blockerListsBuilt).arg(n.blockerListMax);
+    if (s.order().regions()) t += QString("<br><b>regions</b> %1, queue peak %2").arg(s.order().regions()).arg(s.order().queuePeak());
+    text_->setText(t);
+
+    QList<QPointF> h, m, te;
+    for (const StatSample& p : state->recorder().samples()) {
+        h << QPointF(double(p.step), double(p.hits));
+        m << QPointF(double(p.step), double(p.misses));
+        te << QPointF(double(p.step), double(p.tests));
+    }
+    h << QPointF(double(s.steps()), double(n.hits));
+    m << QPointF(double(s.steps()), double(n.misses));
+    te << QPointF(double(s.steps()), double(n.intersectionTests));
+    hits_->replace(h);
+    misses_->replace(m);
+    tests_->replace(te);
+    axisX_->setRange(0, std::max<double>(1.0, double(s.steps())));
+    axisY_->setRange(0, std::max<double>(1.0, double(std::max(n.hits, n.misses)) * 1.05));
+    axisTests_->setRange(0, std::max<double>(1.0, double(n.intersectionTests) * 1.05));
+}
+
+}  // namespace rcgui

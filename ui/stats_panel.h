@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// \brief Dock panel: live counters and a chart of hits, misses and tests over steps.
+#include <QWidget>
+
+class QLabel;
+class QLineSeries;
+class QValueAxis;
+class QChart;
+
+namespace rcgui {
+
+class SessionState;
+
+/// The session's counters as text and a Qt Charts line chart of cumulative hits and
+/// misses (left axis) and intersection tests (right axis) against steps.
+class StatsPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit StatsPanel(QWidget* parent = nullptr);
+    /// Refreshes from `state` (null: a worker is running; shows only `steps`).
+    void refresh(const SessionState* state);
+    /// While a worker runs: the step count it reported.
+    void showProgress(qint64 steps, double progress);
+
+private:
+    QLabel* text_;
+    QChart* chart_;
+    QLineSeries *hits_, *misses_, *tests_;
+    QValueAxis *axisX_, *axisY_, *axisTests_;
+};
+
+}  // namespace rcgui
