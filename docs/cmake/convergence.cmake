@@ -1,4 +1,4 @@
-# Run during the docs build: writes OUT/convergence.md, a fragment the "error against run
+# Run during the docs build: writes OUT/convergence_measured.md, a fragment the "error against run
 # time" page includes. When `raycache convergence` exists it is run and its output (and
 # its chart, when it can draw one) goes in; otherwise the fragment says so plainly.
 # Inputs: -DRAYCACHE=<path of raycache> -DOUT=<folder>
@@ -14,7 +14,7 @@ if(tool_help MATCHES "\n  convergence ")
   endif()
 endif()
 if(NOT have)
-  file(WRITE ${OUT}/convergence.md
+  file(WRITE ${OUT}/convergence_measured.md
 "<b>Not measured in this build.</b> This build's <tt>raycache</tt> has no
 <tt>convergence</tt> command yet (<tt>raycache --help</tt> does not list it), so this
 page shows no measurements. When the command exists, the docs build runs it on
@@ -26,6 +26,16 @@ else()
     if(help MATCHES "--${flag}")
       list(APPEND args --${flag} 128)
       string(APPEND shown " --${flag} 128")
+    endif()
+  endforeach()
+  # Few samples, so that the docs build takes seconds, not minutes
+  foreach(flag_value "spp|8" "ref-grid|8")
+    string(REPLACE "|" ";" fv "${flag_value}")
+    list(GET fv 0 flag)
+    list(GET fv 1 value)
+    if(help MATCHES "--${flag}")
+      list(APPEND args --${flag} ${value})
+      string(APPEND shown " --${flag} ${value}")
     endif()
   endforeach()
   list(APPEND args --csv ${OUT}/convergence.csv)
@@ -41,11 +51,12 @@ else()
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "docs: `${shown}` failed (exit ${rc}):\n${err}")
   endif()
+  string(REPLACE "${OUT}/" "" out "${out}")
   file(WRITE ${OUT}/convergence.txt "${out}")
-  set(text "Measured during this docs build with\n\n<tt>${shown}</tt>\n\n")
+  set(text "Measured during this docs build with\n\n\\verbatim\n${shown}\n\\endverbatim\n\n")
   string(APPEND text "\\verbinclude convergence.txt\n")
   if(plot AND EXISTS ${plot})
     string(APPEND text "\n\\image html convergence.png\n")
   endif()
-  file(WRITE ${OUT}/convergence.md "${text}")
+  file(WRITE ${OUT}/convergence_measured.md "${text}")
 endif()

@@ -108,28 +108,31 @@ LinearImage averageImage(std::shared_ptr<const Scene> scene, RenderOptions optio
     return sum;
 }
 
+SuperSampler::SuperSampler(std::shared_ptr<const Scene> scene, RenderOptions options, const LinearImage& reference)
+    : scene_(std::move(scene)), options_(options), reference_(reference) {}
+
+void SuperSampler::add(const glm::dvec2& offset, bool last) {
+    options_.pixelOffset = offset;
+    RenderSession session(scene_, options_);
+    const auto start = Clock::now();
+    session.run();
+    seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+    const LinearImage img = linearImage(session.image());
+    if (sum_.empty()) sum_.assign(img.size(), Vec3(0.0));
+    for (std::size_t p = 0; p < img.size(); ++p) sum_[p] += img[p];
+    const int spp = ++samples_;
+    if ((spp & (spp - 1)) == 0 || last) {
+        LinearImage mean = sum_;
+        for (Vec3& v : mean) v /= double(spp);
+        points_.push_back({spp, seconds_, rmse(mean, reference_)});
+    }
+}
+
 std::vector<SupersamplePoint> superSample(std::shared_ptr<const Scene> scene, RenderOptions options,
                                           const std::vector<glm::dvec2>& offsets, const LinearImage& reference) {
-    std::vector<SupersamplePoint> out;
-    LinearImage sum, mean;
-    double seconds = 0.0;
-    for (std::size_t i = 0; i < offsets.size(); ++i) {
-        options.pixelOffset = offsets[i];
-        RenderSession session(scene, options);
-        const auto start = Clock::now();
-        session.run();
-        seconds += std::chrono::duration<double>(Clock::now() - start).count();
-        const LinearImage img = linearImage(session.image());
-        if (sum.empty()) sum.assign(img.size(), Vec3(0.0));
-        for (std::size_t p = 0; p < img.size(); ++p) sum[p] += img[p];
-        const int spp = int(i + 1);
-        if ((spp & (spp - 1)) == 0 || spp == int(offsets.size())) {
-            mean = sum;
-            for (Vec3& v : mean) v /= double(spp);
-            out.push_back({spp, seconds, rmse(mean, reference)});
-        }
-    }
-    return out;
+    SuperSampler s(std::move(scene), options, reference);
+    for (std::size_t i = 0; i < offsets.size(); ++i) s.add(offsets[i], i + 1 == offsets.size());
+    return s.points();
 }
 
 }  // namespace rc

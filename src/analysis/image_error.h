@@ -54,6 +54,26 @@ struct SupersamplePoint {
     double rmse = 0;     ///< of their average against the reference
 };
 
+/// Supersampling one sample at a time, so that several configurations can take turns
+/// (and share the machine's ups and downs alike).
+class SuperSampler {
+public:
+    SuperSampler(std::shared_ptr<const Scene> scene, RenderOptions options, const LinearImage& reference);
+    /// Renders one more sample at `offset`; at 1, 2, 4, ... samples and when `last`,
+    /// records a point.
+    void add(const glm::dvec2& offset, bool last = false);
+    const std::vector<SupersamplePoint>& points() const { return points_; }
+
+private:
+    std::shared_ptr<const Scene> scene_;
+    RenderOptions options_;
+    const LinearImage& reference_;
+    LinearImage sum_;
+    int samples_ = 0;
+    double seconds_ = 0.0;
+    std::vector<SupersamplePoint> points_;
+};
+
 /// Renders the jittered samples one by one and reports, at 1, 2, 4, ... and
 /// offsets.size() samples, the RMSE of their average against `reference`.
 std::vector<SupersamplePoint> superSample(std::shared_ptr<const Scene> scene, RenderOptions options,

@@ -1,7 +1,11 @@
 #include "cli/commands.h"
 
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -15,13 +19,37 @@
 #include "render/report.h"
 #include "scene/builtin_scenes.h"
 
+#include <unistd.h>
+
 namespace rc::cli {
 
 namespace {
 const std::vector<std::string> kCaches{"none", "cylinder", "blocker"};
 const std::vector<std::string> kOrders{"scanline", "progressive", "bfs"};
 
+// The signal (SIGINT, SIGTERM) that asked a render to stop, 0 when none did
+volatile std::sig_atomic_t gStopSignal = 0;
+void onStopSignal(int sig) { gStopSignal = sig; }
+
 }  // namespace
+
+const CLI::Validator& outputFile() {
+    static const CLI::Validator v(
+        [](std::string& path) -> std::string {
+            namespace fs = std::filesystem;
+            if (path.empty()) return "the file name is empty";
+            std::error_code ec;
+            const fs::path p(path);
+            if (fs::is_directory(p, ec)) return "'" + path + "' is a directory, not a file";
+            const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+            if (!fs::is_directory(dir, ec)) return "cannot write '" + path + "': no folder '" + dir.string() + "'";
+            if (::access(dir.c_str(), W_OK) != 0)
+                return "cannot write '" + path + "': " + std::strerror(errno);
+            return {};
+        },
+        "FILE", "OutputFile");
+    return v;
+}
 
 void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     RenderFlags& f = *this;
@@ -77,6 +105,14 @@ int renderCommand(const RenderArgs& a) {
     const auto start = Clock::now();
     bool shown = false;
     double lastShown = 0.0;
+    // SIGINT (Ctrl-C) or SIGTERM stops the render and nothing is written; a second one
+    // kills at once. One that comes while the files are written waits for them.
+    struct sigaction stop {};
+    stop.sa_handler = onStopSignal;
+    sigemptyset(&stop.sa_mask);
+    stop.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &stop, nullptr);
+    sigaction(SIGTERM, &stop, nullptr);
     const ParallelRun run = renderParallel(scene, options, a.threads, a.stats.empty() ? nullptr : &beams,
                                            [&](double done) {
         const double s = std::chrono::duration<double>(Clock::now() - start).count();
@@ -85,10 +121,14 @@ int renderCommand(const RenderArgs& a) {
             std::fprintf(stderr, "\rrendering %s: %5.1f%%  %6.1f s", scene->name.c_str(), 100.0 * done, s);
             shown = true;
         }
-        return true;
+        return gStopSignal == 0;
     });
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (shown) std::fprintf(stderr, "\n");
+    if (gStopSignal != 0) {
+        std::fprintf(stderr, "raycache: interrupted (%s); no file written\n", strsignal(gStopSignal));
+        return 128 + gStopSignal;
+    }
 
     if (!a.out.empty()) writePng(a.out, options.width, options.height, run.image.rgb8());
     const Counters& n = run.counters;
@@ -118,8 +158,8 @@ void addRenderCommand(CLI::App& app, Commands& out) {
     CLI::App* c = app.add_subcommand("render", "render a scene to PNG and report what it took");
     c->add_option("scene", a->scene, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
         ->required();
-    c->add_option("-o,--output", a->out, "PNG file to write");
-    c->add_option("--stats", a->stats, "statistics JSON file to write");
+    c->add_option("-o,--output", a->out, "PNG file to write")->check(outputFile());
+    c->add_option("--stats", a->stats, "statistics JSON file to write")->check(outputFile());
     c->add_flag("--verify", a->flags.verify, "run the complete search beside every cached answer");
     c->add_flag("-q,--quiet", a->quiet, "no progress line or summary");
     c->add_option("--threads", a->threads, "threads, each with its own cache tree (0: one per core)")

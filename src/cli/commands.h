@@ -32,6 +32,10 @@ struct RenderFlags {
     RenderOptions options() const;
 };
 
+/// Checks that an output file can be written (its folder exists and is writable, and it
+/// is not a folder) when the command line is parsed, before any work.
+const CLI::Validator& outputFile();
+
 void addRenderCommand(CLI::App& app, Commands& out);
 void addInfoCommand(CLI::App& app, Commands& out);
 void addScenesCommand(CLI::App& app, Commands& out);

@@ -33,6 +33,7 @@ double median(std::vector<double> v) {
 namespace {
 struct Table1Args {
     std::vector<int> sizes{3, 4, 5};
+    std::vector<std::string> scenes;  ///< instead of cube:N
     int repeat = 3;
     std::string csv;
     RenderFlags flags;
@@ -46,13 +47,17 @@ int table1(const Table1Args& a) {
     if (flags.width == 0) flags.width = 256;
     if (flags.height == 0) flags.height = flags.width;
     std::ostringstream csv;
-    csv << "N,cache,order,seconds,time_ratio,intersection_tests,tests_ratio,complete_searches,"
+    csv << "scene,cache,order,seconds,time_ratio,intersection_tests,tests_ratio,complete_searches,"
            "beam_nodes,searches_per_beam,paper_time_ratio\n";
-    std::printf("Table 1: cube:N at %dx%d, depth %d, median of %d runs; time and intersection tests\n"
+    std::printf("Table 1: %s at %dx%d, depth %d, median of %d runs; time and intersection tests\n"
                 "relative to no cache, complete searches per beam-tree node, the paper's figure beside.\n",
-                flags.width, flags.height, flags.depth, repeat_);
-    for (int N : sizes_) {
-        auto scene = std::make_shared<const Scene>(makeBuiltin("cube:" + std::to_string(N), flags.seed));
+                a.scenes.empty() ? "cube:N" : "the scenes given", flags.width, flags.height, flags.depth, repeat_);
+    std::vector<std::string> specs = a.scenes;
+    if (specs.empty())
+        for (int N : sizes_) specs.push_back("cube:" + std::to_string(N));
+    for (const std::string& spec : specs) {
+        auto scene = std::make_shared<const Scene>(loadScene(spec, flags.seed));
+        const int N = spec.rfind("cube:", 0) == 0 ? std::atoi(spec.c_str() + 5) : 0;
         const int configs = int(std::size(kConfigs));
         std::vector<std::vector<double>> times(configs);
         std::vector<Counters> counts(configs);
@@ -74,8 +79,8 @@ int table1(const Table1Args& a) {
         }
         const double t0 = median(times[0]);
         const double tests0 = double(counts[0].intersectionTests);
-        std::printf("\nN=%d: %d spheres; beam tree %lld nodes, %.2f rays per pixel, coherence %.2e\n", N,
-                    scene->size(), (long long)beams.nodes, beams.averageRayTreeSize, beams.coherence);
+        std::printf("\n%s: %d objects; beam tree %lld nodes, %.2f rays per pixel, coherence %.2e\n",
+                    scene->name.c_str(), scene->size(), (long long)beams.nodes, beams.averageRayTreeSize, beams.coherence);
         std::printf("  %-20s %8s %7s %8s %10s %13s\n", "configuration", "seconds", "time", "paper", "tests",
                     "searches/beam");
         for (int c = 0; c < configs; ++c) {
@@ -89,7 +94,7 @@ int table1(const Table1Args& a) {
             const std::string name = std::string(kConfigs[c].cache) + ", " + kConfigs[c].order;
             std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f\n", name.c_str(), t, t / t0, paper.c_str(),
                         double(counts[c].intersectionTests) / tests0, perBeam);
-            csv << N << ',' << kConfigs[c].cache << ',' << kConfigs[c].order << ',' << t << ',' << t / t0 << ','
+            csv << scene->name << ',' << kConfigs[c].cache << ',' << kConfigs[c].order << ',' << t << ',' << t / t0 << ','
                 << counts[c].intersectionTests << ',' << double(counts[c].intersectionTests) / tests0 << ','
                 << counts[c].completeSearches << ',' << beams.nodes << ',' << perBeam << ',' << paper << '\n';
         }
@@ -107,7 +112,9 @@ void addTable1Command(CLI::App& app, Commands& out) {
         ->check(CLI::Range(1, 64))->capture_default_str();
     c->add_option("--repeat", a->repeat, "repeats; times are medians")->check(CLI::Range(1, 100))
         ->capture_default_str();
-    c->add_option("--csv", a->csv, "also write the table as CSV");
+    c->add_option("--scenes", a->scenes, "other scenes instead of cube:N (e.g. ../shared/scenes/balls2.nff)")
+        ->delimiter(',');
+    c->add_option("--csv", a->csv, "also write the table as CSV")->check(outputFile());
     a->flags.addTo(c, false);
     out.push_back({c, [a] { return table1(*a); }});
 }

@@ -1,0 +1,77 @@
+// Tutorial 06's check: tutorial::stableRoots against rc::sphereRootsStable, on ordinary
+// cases (where the textbook formula is fine too) and on stiff ones (where it is not).
+#include <algorithm>
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+#include <glm/geometric.hpp>
+
+#include "exercise.h"
+#include "tutorial_random.h"
+
+namespace {
+
+// A ray towards the sphere, its closest approach `aim` radii from the centre
+rc::Ray rayTowards(tutorial::Random& rnd, const rc::Sphere& s, double distance, double aim) {
+    const rc::Vec3 o = s.c + distance * rnd.direction();
+    // A direction at perpendicular offset aim * r from the centre
+    const rc::Vec3 axis = glm::normalize(s.c - o);
+    rc::Vec3 side = glm::cross(axis, rnd.direction());
+    side = glm::normalize(side);
+    const rc::Vec3 target = s.c + aim * s.r * side;
+    return {o, glm::normalize(target - o)};
+}
+
+// The student's roots must match the library's to 1e-12 of the problem's size
+void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
+    const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
+    const rc::SphereRoots got = tutorial::stableRoots(ray, s);
+    INFO("sphere radius " << s.r << " at distance " << glm::length(s.c - ray.o) << ", aimed " << aim
+                          << " radii off centre; library: hit " << want.hit << " t0 " << want.t0 << " t1 "
+                          << want.t1 << "; yours: hit " << got.hit << " t0 " << got.t0 << " t1 " << got.t1);
+    // Near tangency either answer is defensible; elsewhere the hit must agree
+    if (aim < 0.9 || aim > 1.1) REQUIRE(got.hit == want.hit);
+    if (!got.hit || !want.hit) return;
+    // Any formula is limited by the rounding of the coordinates, which are as large as
+    // the distance to the centre and the radius: measure the error against those
+    const double scale = std::max({1.0, std::abs(want.t0), std::abs(want.t1), glm::length(ray.o - s.c), s.r});
+    REQUIRE(std::abs(got.t0 - want.t0) <= 1e-12 * scale);
+    REQUIRE(std::abs(got.t1 - want.t1) <= 1e-12 * scale);
+}
+
+}  // namespace
+
+TEST_CASE("stableRoots agrees with the library on ordinary spheres", "[tutorial06]") {
+    tutorial::Random rnd(7);
+    for (int i = 0; i < 20000; ++i) {
+        const rc::Sphere s{rnd.inBox(10.0), rnd.uniform(0.5, 3.0)};
+        const double aim = rnd.uniform(0.0, 1.5);
+        compare(rayTowards(rnd, s, rnd.uniform(4.0, 30.0), aim), s, aim);
+    }
+}
+
+TEST_CASE("stableRoots agrees with the library on small spheres far away", "[tutorial06]") {
+    // The textbook formula forms b*b - c from two numbers near distance^2 and loses
+    // every digit of r^2 once r^2 is below distance^2 times the double's epsilon
+    tutorial::Random rnd(2020);
+    for (int i = 0; i < 20000; ++i) {
+        const rc::Sphere s{rnd.inBox(1.0), rnd.logUniform(-4.0, -1.0)};
+        const double aim = rnd.uniform(0.0, 0.85);  // a clear hit
+        compare(rayTowards(rnd, s, rnd.logUniform(3.0, 7.0), aim), s, aim);
+    }
+}
+
+TEST_CASE("stableRoots agrees with the library from inside and on the surface", "[tutorial06]") {
+    tutorial::Random rnd(1986);
+    for (int i = 0; i < 20000; ++i) {
+        const rc::Sphere s{rnd.inBox(10.0), rnd.logUniform(-2.0, 3.0)};
+        // The origin inside the sphere, or on its surface (a ray leaving a hit point, not
+        // grazing: near tangency every formula loses digits to the rounding of the origin)
+        const double at = i % 2 ? rnd.uniform(0.0, 0.99) : 1.0;
+        const rc::Vec3 n = rnd.direction();
+        rc::Vec3 d = rnd.direction();
+        while (at == 1.0 && std::abs(glm::dot(d, n)) < 0.1) d = rnd.direction();
+        compare(rc::Ray{s.c + at * s.r * n, d}, s, 0.0);
+    }
+}
