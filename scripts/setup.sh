@@ -9,7 +9,7 @@ packages=(
   qt6-base-dev libqt6charts6-dev libqt6opengl6-dev libgl-dev
   doxygen graphviz doxygen-awesome-css libjs-mathjax
   clang libclang-rt-14-dev libembree-dev
-  xvfb xauth
+  xvfb xauth python3-matplotlib
 )
 if [[ "${1:-}" == "--with-browser" ]]; then packages+=(chromium); fi
 

@@ -98,18 +98,34 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
 void BlockerCache::buildCone(const Query& q, CacheEntry& e, Counters& n) const {
     // [empty-cone]
     // Rays leave from anywhere in the origin's sphere (a point for the eye): direction d
-    // misses sphere j if its angle to c_j exceeds asin((r_j + r_origin) / distance)
+    // misses sphere j if its angle theta_j to c_j exceeds beta_j = asin((r_j + r_origin) / dist)
     const Sphere from = lists_.siteSphere(lists_.originSite(q.origin));
     const double reach = from.r + slack_;
-    double angle = kNoHit;
+    // First pass without trigonometry: the smallest theta_j - beta_j has the largest cosine
+    std::vector<double>& cosines = coneScratch_;
+    cosines.assign(std::size_t(scene_.size()), -2.0);
+    double best = -2.0;
     for (int id = 0; id < scene_.size(); ++id) {
         // A ray leaving an object outward cannot meet it again; one heading into it can
         if (id == q.origin.object && !q.origin.inside) continue;
         const Sphere& s = scene_.objects[id].bound;
         const Vec3 v = s.c - from.c;
         const double dist = glm::length(v);
-        if (dist <= s.r + reach) { angle = -1.0; break; }  // touching the origin: no cone
-        angle = std::min(angle, angleBetween(q.ray.d, v) - std::asin((s.r + reach) / dist));
+        const double sinB = (s.r + reach) / dist;
+        if (!(sinB < 1.0)) { best = 2.0; break; }  // touching the origin: no cone
+        const double cosB = std::sqrt(1.0 - sinB * sinB);
+        const double sinT = glm::length(glm::cross(q.ray.d, v)) / dist, cosT = glm::dot(q.ray.d, v) / dist;
+        if (sinT * cosB - cosT * sinB < 0.0) { best = 2.0; break; }  // d points into j's cone
+        cosines[id] = cosT * cosB + sinT * sinB;
+        best = std::max(best, cosines[id]);
+    }
+    // Second pass, exact angles for the few nearest the axis
+    double angle = best > 1.0 ? -1.0 : kNoHit;
+    for (int id = 0; id < scene_.size() && angle > 0.0; ++id) {
+        if (cosines[id] < best - 1e-12) continue;
+        const Sphere& s = scene_.objects[id].bound;
+        const Vec3 v = s.c - from.c;
+        angle = std::min(angle, angleBetween(q.ray.d, v) - std::asin((s.r + reach) / glm::length(v)));
     }
     e.coneAxis = q.ray.d;
     e.coneAngle = angle - 1e-9;

@@ -28,6 +28,7 @@ private:
     Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, Counters& n);
     void buildCone(const Query& q, CacheEntry& e, Counters& n) const;
     BlockerLists lists_;
+    mutable std::vector<double> coneScratch_;
 };
 
 }  // namespace rc
