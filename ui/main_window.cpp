@@ -5,6 +5,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QWidgetAction>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDockWidget>
@@ -167,6 +168,11 @@ void MainWindow::buildToolbars() {
     frontierBox_ = box("Frontier", "Breadth-first queue, deferred seeds and regions", &Overlays::frontier);
     missesBox_ = box("Misses", "Where misses happened, coloured by reason", &Overlays::misses);
     gridBox_ = box("Grid", "Pixel grid at high zoom", &Overlays::grid);
+    const QList<QAction*> shown = show->actions();
+    cylinderAct_ = shown.value(0);
+    hullAct_ = shown.value(1);
+    frontierAct_ = shown.value(2);
+    missesAct_ = shown.value(3);
     heatmapBox_ = new QComboBox(this);
     heatmapBox_->addItem("image", int(Heatmap::None));
     heatmapBox_->addItem("tests per pixel", int(Heatmap::Tests));
@@ -428,6 +434,23 @@ void MainWindow::updateControls() {
     for (QWidget* w : std::initializer_list<QWidget*>{sceneBox_, cacheBox_, orderBox_, sizeBox_}) if (w) w->setEnabled(!busy);
     if (resetAct_) resetAct_->setEnabled(true);
     if (openAct_) openAct_->setEnabled(!busy);
+    // Hide the overlays this cache and order cannot draw: no cache has no cylinder, hull or
+    // misses; only the blocker cache has hulls; only breadth-first order has a frontier
+    if (s) {
+        const rc::RenderOptions& o = s->session().options();
+        const bool cached = o.cache != rc::CacheKind::None;
+        if (cylinderAct_) cylinderAct_->setVisible(cached);
+        if (missesAct_) missesAct_->setVisible(cached);
+        if (hullAct_) hullAct_->setVisible(o.cache == rc::CacheKind::Blocker);
+        if (frontierAct_) frontierAct_->setVisible(o.order == rc::OrderKind::BreadthFirst);
+    }
+}
+
+QStringList MainWindow::offeredOverlays() const {
+    QStringList out;
+    for (QAction* a : {cylinderAct_, hullAct_, frontierAct_, missesAct_})
+        if (a && a->isVisible()) out << qobject_cast<QCheckBox*>(qobject_cast<QWidgetAction*>(a)->defaultWidget())->text();
+    return out;
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -47,6 +47,8 @@ public:
     /// The scene being rendered (null before the first load).
     const rc::Scene* scene() const { return scene_.get(); }
     void setCache(rc::CacheKind k);
+    /// Labels of the overlay boxes offered for the current cache and order.
+    QStringList offeredOverlays() const;
     void setOrder(rc::OrderKind k);
     /// Image size; 0 x 0 means the scene's own.
     void setImageSize(int width, int height);
@@ -111,6 +113,8 @@ private:
               *heatmapBox_ = nullptr;
     QCheckBox *cylinderBox_ = nullptr, *hullBox_ = nullptr, *frontierBox_ = nullptr, *missesBox_ = nullptr,
               *gridBox_ = nullptr;
+    /// The toolbar actions of the overlay boxes: hidden when the session cannot use them
+    QAction *cylinderAct_ = nullptr, *hullAct_ = nullptr, *frontierAct_ = nullptr, *missesAct_ = nullptr;
     QSlider* speed_ = nullptr;
     QLabel* speedLabel_ = nullptr;
     QAction *stepRayAct_ = nullptr, *stepPixelAct_ = nullptr, *nextMissAct_ = nullptr, *playAct_ = nullptr,

@@ -1,5 +1,7 @@
 #include "stats_panel.h"
 
+#include "analysis/left_out.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QLabel>
@@ -74,6 +76,9 @@ void StatsPanel::refresh(const SessionState* state) {
     if (n.blockerListsBuilt)
         t += QString("<br><b>blocker lists</b> %1 built, longest %2").arg(n.blockerListsBuilt).arg(n.blockerListMax);
     if (s.order().regions()) t += QString("<br><b>regions</b> %1, queue peak %2").arg(s.order().regions()).arg(s.order().queuePeak());
+    // What this scene and these options leave out (no shadow rays without lights, ...)
+    for (const std::string& line : rc::leftOut(s.scene(), &s.options()))
+        t += QString("<br><b>left out</b> %1").arg(QString::fromStdString(line).toHtmlEscaped());
     text_->setText(t);
 
     QList<QPointF> h, m, te;

@@ -301,6 +301,15 @@ TEST_CASE("The miss overlay marks misses in their reason's colour", "[gui][overl
     REQUIRE(plain.pixelColor(at) != drawn.pixelColor(at));
 }
 
+TEST_CASE("Overlays the cache and order cannot draw are not offered", "[gui][overlay]") {
+    Fixture none("pair", rc::CacheKind::None, rc::OrderKind::Scanline);
+    REQUIRE(none.w.offeredOverlays().isEmpty());
+    Fixture cyl("pair", rc::CacheKind::Cylinder, rc::OrderKind::Scanline);
+    REQUIRE(cyl.w.offeredOverlays() == QStringList{"Cylinder", "Misses"});
+    Fixture all("pair", rc::CacheKind::Blocker, rc::OrderKind::BreadthFirst);
+    REQUIRE(all.w.offeredOverlays() == QStringList{"Cylinder", "Hull", "Frontier", "Misses"});
+}
+
 TEST_CASE("Heatmaps replace the image", "[gui][overlay]") {
     Fixture f("pair");
     f.state().runUntil(RunGoal::ToStep, 30000);
