@@ -2,8 +2,10 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -66,7 +68,12 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
         ->check(CLI::Range(1, 64))->capture_default_str();
     c->add_option("--cutoff", f.cutoff, "rays whose weight is below this are not spawned (0: off)")
-        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+        ->check(CLI::Range(0.0, 1.0))
+        ->check(CLI::Validator([](std::string& s) -> std::string {
+            // CLI::Range lets NaN through: no comparison with NaN is true
+            return std::isnan(std::strtod(s.c_str(), nullptr)) ? "NaN is not a number from 0 to 1" : "";
+        }, "", "NotNaN"))
+        ->capture_default_str();
     c->add_option("--band", f.band, "scanlines per band in bfs and progressive orders (0: whole image)")
         ->check(CLI::Range(0, 16384))->capture_default_str();
     c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter")->capture_default_str();

@@ -21,7 +21,10 @@ std::optional<std::string> makePolygon(std::vector<Vec3> vertices, std::vector<V
         n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
         extent = std::max(extent, glm::length(b - a));
     }
-    const double len = glm::length(n);
+    // Scaled first: with coordinates up to 1e100 (the reader's limit) n reaches 1e200 and
+    // its squared length would overflow
+    const double big = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+    const double len = big > 0.0 ? big * glm::length(n / big) : 0.0;
     if (!(len > 1e-12 * extent * extent) || !std::isfinite(len))
         return "degenerate polygon (collinear or coincident vertices)";
     n /= len;

@@ -40,7 +40,14 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
 
 Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
     if (e.object < 0) {
-        // Nothing was hit: the empty cone of directions around the last such ray, else the cylinder
+        // Nothing was hit: the empty cone of directions around the last such ray, else the
+        // cylinder, built the first time the entry is used again. Cones weigh every object;
+        // in front of a grid the cylinder needs only nearby cells.
+        if (e.pending) {
+            if (search_.nearRadius() == kNoHit) buildCone(e, n);
+            if (e.coneAngle < 0.0) buildCylinder(e, n);
+            e.pending = false;
+        }
         if (e.coneAngle < 0.0) return probeCylinder(q, e, n);
         ++n.coneTests;
         if (angleBetween(q.ray.d, e.coneAxis) < e.coneAngle) return {true, {}, Decision::Hit};
@@ -75,31 +82,31 @@ Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why,
     // [blocker-shadow]
 }
 
-void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) {
+void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counters&) {
     e.state = CacheEntry::State::Loaded;
     e.origin = q.origin;
     e.object = a.object;
     e.cylinder.radius = -1.0;
     e.coneAngle = -1.0;
+    e.pending = false;
     e.blockerOrigin = lists_.originSite(q.origin);
     if (q.kind == RayKind::Shadow) {
         e.blockerTarget = lists_.lightSite(q.light);
     } else if (a.object >= 0) {
-        e.blockerTarget = a.object;
-        lists_.get(e.blockerOrigin, e.blockerTarget, n);
+        e.blockerTarget = a.object;  // its list is built when the entry is next used
     } else {
         e.blockerTarget = -1;
-        // Cones weigh every object; in front of a grid, the cylinder needs only nearby cells
-        if (search_.nearRadius() == kNoHit) buildCone(q, e, n);
-        if (e.coneAngle < 0.0) buildCylinder(q, a, e, n);
+        e.coneAxis = q.ray.d;
+        keepSegment(q, a, e);
     }
 }
 
-void BlockerCache::buildCone(const Query& q, CacheEntry& e, Counters& n) const {
+void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     // [empty-cone]
     // Rays leave from anywhere in the origin's sphere (a point for the eye): direction d
     // misses sphere j if its angle theta_j to c_j exceeds beta_j = asin((r_j + r_origin) / dist)
-    const Sphere from = lists_.siteSphere(lists_.originSite(q.origin));
+    const Sphere from = lists_.siteSphere(lists_.originSite(e.origin));
+    const Vec3 axis = e.coneAxis;
     const double reach = from.r + slack_;
     // First pass without trigonometry: the smallest theta_j - beta_j has the largest cosine
     std::vector<double>& cosines = coneScratch_;
@@ -107,14 +114,14 @@ void BlockerCache::buildCone(const Query& q, CacheEntry& e, Counters& n) const {
     double best = -2.0;
     for (int id = 0; id < scene_.size(); ++id) {
         // A ray leaving an object outward cannot meet it again; one heading into it can
-        if (id == q.origin.object && !q.origin.inside) continue;
+        if (id == e.origin.object && !e.origin.inside) continue;
         const Sphere& s = scene_.objects[id].bound;
         const Vec3 v = s.c - from.c;
         const double dist = glm::length(v);
         const double sinB = (s.r + reach) / dist;
         if (!(sinB < 1.0)) { best = 2.0; break; }  // touching the origin: no cone
         const double cosB = std::sqrt(1.0 - sinB * sinB);
-        const double sinT = glm::length(glm::cross(q.ray.d, v)) / dist, cosT = glm::dot(q.ray.d, v) / dist;
+        const double sinT = glm::length(glm::cross(axis, v)) / dist, cosT = glm::dot(axis, v) / dist;
         if (sinT * cosB - cosT * sinB < 0.0) { best = 2.0; break; }  // d points into j's cone
         cosines[id] = cosT * cosB + sinT * sinB;
         best = std::max(best, cosines[id]);
@@ -125,9 +132,8 @@ void BlockerCache::buildCone(const Query& q, CacheEntry& e, Counters& n) const {
         if (cosines[id] < best - 1e-12) continue;
         const Sphere& s = scene_.objects[id].bound;
         const Vec3 v = s.c - from.c;
-        angle = std::min(angle, angleBetween(q.ray.d, v) - std::asin((s.r + reach) / glm::length(v)));
+        angle = std::min(angle, angleBetween(axis, v) - std::asin((s.r + reach) / glm::length(v)));
     }
-    e.coneAxis = q.ray.d;
     e.coneAngle = angle - 1e-9;
     // [empty-cone]
     ++n.cylindersBuilt;

@@ -26,7 +26,7 @@ protected:
 private:
     Lookup probe(const Query& q, CacheEntry& e, Counters& n);
     Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, Counters& n);
-    void buildCone(const Query& q, CacheEntry& e, Counters& n) const;
+    void buildCone(CacheEntry& e, Counters& n) const;
     BlockerLists lists_;
     mutable std::vector<double> coneScratch_;
 };

@@ -58,18 +58,23 @@ Vec3 CacheStrategy::segmentEnd(const Query& q, const Answer& a) const {
     return q.ray.at(r.hit ? std::max(0.0, r.t1) : 0.0);
 }
 
-void CacheStrategy::buildCylinder(const Query& q, const Answer& a, CacheEntry& e, Counters& n) const {
+void CacheStrategy::keepSegment(const Query& q, const Answer& a, CacheEntry& e) const {
+    e.cylinder = {q.ray.o, segmentEnd(q, a), -1.0};
+    e.pending = true;
+}
+
+void CacheStrategy::buildCylinder(CacheEntry& e, Counters& n) const {
     // [build-cylinder]
     // The radius is the distance from the segment to the nearest other surface
-    const Vec3 from = q.ray.o;
-    const Vec3 to = segmentEnd(q, a);
+    const Vec3 from = e.cylinder.a;
+    const Vec3 to = e.cylinder.b;
     // Only objects near the segment can set the radius; the search says which, and caps it
     double radius = search_.nearRadius();
     std::vector<int>& candidates = scratch_;
     search_.objectsNear(glm::min(from, to) - Vec3(radius), glm::max(from, to) + Vec3(radius), candidates);
     for (int id : candidates) {
-        if (id == a.object) continue;
-        if (id == q.origin.object && !q.origin.inside) continue;  // cannot be met again
+        if (id == e.object) continue;
+        if (id == e.origin.object && !e.origin.inside) continue;  // cannot be met again
         const Sphere& s = scene_.objects[id].bound;
         radius = std::min(radius, segmentDistance(s.c, from, to) - s.r);
     }

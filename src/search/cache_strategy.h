@@ -56,8 +56,10 @@ protected:
     /// The end of the segment a query covers: its hit, its light, or where it leaves
     /// the scene's bounding sphere.
     Vec3 segmentEnd(const Query& q, const Answer& a) const;
-    /// Builds the cylinder of safety around the segment of `q` ending at `a`.
-    void buildCylinder(const Query& q, const Answer& a, CacheEntry& e, Counters& n) const;
+    /// Keeps the segment of `q` ending at `a`; its cylinder is built when first needed.
+    void keepSegment(const Query& q, const Answer& a, CacheEntry& e) const;
+    /// Builds the cylinder of safety around the kept segment (e.cylinder.a to b).
+    void buildCylinder(CacheEntry& e, Counters& n) const;
     /// Tests the cached object and the cylinder of safety.
     Lookup probeCylinder(const Query& q, const CacheEntry& e, Counters& n) const;
 

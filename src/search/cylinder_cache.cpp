@@ -6,6 +6,11 @@ Lookup CylinderCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Cou
     // [cylinder-lookup]
     MissReason why = unusable(q, e);
     if (why == MissReason::None) {
+        // The cylinder is built the first time the entry is used again
+        if (e.pending) {
+            buildCylinder(e, n);
+            e.pending = false;
+        }
         const Lookup probe = probeCylinder(q, e, n);
         if (probe.known) return probe;
         why = probe.reason;
@@ -16,11 +21,11 @@ Lookup CylinderCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Cou
     // [cylinder-lookup]
 }
 
-void CylinderCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) {
+void CylinderCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counters&) {
     e.state = CacheEntry::State::Loaded;
     e.origin = q.origin;
     e.object = a.object;
-    buildCylinder(q, a, e, n);
+    keepSegment(q, a, e);
 }
 
 }  // namespace rc

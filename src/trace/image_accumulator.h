@@ -22,8 +22,10 @@ public:
     // [accumulate]
     /// Adds a contribution to a pixel, rounded to a multiple of 2^-32.
     void add(int pixel, const Vec3& c) {
-        for (int k = 0; k < 3; ++k)
-            sum_[std::size_t(pixel) * 3 + k] += std::int64_t(std::llround(c[k] * kScale));
+        for (int k = 0; k < 3; ++k) {
+            std::int64_t& sum = sum_[std::size_t(pixel) * 3 + k];
+            sum = saturatingAdd(sum, toFixed(c[k]));
+        }
     }
     /// The pixel's sum so far.
     Vec3 value(int pixel) const {
@@ -33,13 +35,30 @@ public:
     // [accumulate]
     /// Adds another image of the same size, pixel by pixel.
     ImageAccumulator& operator+=(const ImageAccumulator& o) {
-        for (std::size_t i = 0; i < sum_.size() && i < o.sum_.size(); ++i) sum_[i] += o.sum_[i];
+        for (std::size_t i = 0; i < sum_.size() && i < o.sum_.size(); ++i) sum_[i] = saturatingAdd(sum_[i], o.sum_[i]);
         return *this;
     }
     /// The 8-bit RGB image, clamped to [0, 1].
     std::vector<std::uint8_t> rgb8() const;
     int width() const { return width_; }
     int height() const { return height_; }
+
+    /// Largest magnitude of one contribution: far brighter than white, small enough that
+    /// 2^11 of them fit the sum. Scenes with absurd light (colours of 1e100) reach it.
+    static constexpr double kMaxContribution = 1048576.0;  // 2^20
+    /// One contribution in fixed point: NaN counts as 0, magnitudes are clamped.
+    static std::int64_t toFixed(double v) {
+        if (std::isnan(v)) return 0;
+        v = v < -kMaxContribution ? -kMaxContribution : (v > kMaxContribution ? kMaxContribution : v);
+        return std::int64_t(std::llround(v * kScale));
+    }
+    /// Sums stop at the int64 limits instead of overflowing (undefined behaviour). With
+    /// contributions of one sign, as shading's are, that is still independent of order.
+    static std::int64_t saturatingAdd(std::int64_t a, std::int64_t b) {
+        std::int64_t r = 0;
+        if (__builtin_add_overflow(a, b, &r)) return b > 0 ? INT64_MAX : INT64_MIN;
+        return r;
+    }
 
 private:
     int width_, height_;
