@@ -52,6 +52,12 @@ Vec3 Scene::normal(int id, const Vec3& p) const {
     return (p - s.c) / s.r;
 }
 
+double Scene::extent() const {
+    double e = glm::length(bound.c) + bound.r + glm::length(camera.from);
+    for (const Light& l : lights) e = std::max(e, glm::length(l.position));
+    return e;
+}
+
 bool Scene::hasTransparency() const {
     return std::any_of(objects.begin(), objects.end(),
                        [&](const Object& o) { return materials[o.material].kt > 0.0; });

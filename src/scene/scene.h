@@ -60,6 +60,9 @@ struct Scene {
     const Material& material(int id) const { return materials[objects[id].material]; }
     int size() const { return int(objects.size()); }
     bool hasTransparency() const;
+    /// The size of the scene's coordinates: how far from the origin its objects, eye and
+    /// lights reach. Margins that absorb rounding are this times a few ulps.
+    double extent() const;
 };
 
 /// A scene that could not be read: `file:line:column: message`.

@@ -12,9 +12,7 @@ namespace rc {
 BlockerLists::BlockerLists(const Scene& scene, const CompleteSearch& search)
     : scene_(scene), search_(search), sites_(scene.size() + 1 + int(scene.lights.size())) {
     // Rounding only ever adds spheres to a list: widen the hull by a few ulps of the scene
-    double scale = glm::length(scene.bound.c) + scene.bound.r + glm::length(scene.camera.from);
-    for (const Light& l : scene.lights) scale = std::max(scale, glm::length(l.position));
-    slack_ = 1e-9 * scale;
+    slack_ = 1e-9 * scene.extent();
 }
 
 Sphere BlockerLists::siteSphere(int site) const {

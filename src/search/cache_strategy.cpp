@@ -28,9 +28,7 @@ std::optional<CacheKind> parseCacheKind(std::string_view s) {
 
 CacheStrategy::CacheStrategy(const Scene& scene, const CompleteSearch& search)
     : scene_(scene), search_(search) {
-    double scale = glm::length(scene.bound.c) + scene.bound.r + glm::length(scene.camera.from);
-    for (const Light& l : scene.lights) scale = std::max(scale, glm::length(l.position));
-    slack_ = 1e-9 * scale;
+    slack_ = 1e-9 * scene.extent();
 }
 
 Lookup CacheStrategy::searchAndReload(const Query& q, CacheEntry& e, MissReason why, Counters& n) {
