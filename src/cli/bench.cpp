@@ -107,7 +107,7 @@ void addBenchCommand(CLI::App& app, Commands& out) {
     c->add_option("--threads", a->threads, "threads (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
     c->add_option("--linear-limit", a->linearLimit, "leave the linear scan out above this many objects")
         ->capture_default_str();
-    c->add_option("--csv", a->csv, "also write the table as CSV");
+    c->add_option("--csv", a->csv, "also write the table as CSV")->check(outputFile());
     a->flags.addTo(c, false);
     out.push_back({c, [a] { return bench(*a); }});
 }

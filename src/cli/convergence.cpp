@@ -247,8 +247,8 @@ void addConvergenceCommand(CLI::App& app, Commands& out) {
     CLI::App* c = app.add_subcommand("convergence", "error against run time: partial images and supersampling, "
                                                     "every cache and order");
     c->add_option("scene", a->scene, "an .nff file or a built-in such as cube:5")->required();
-    c->add_option("--csv", a->csv, "write every sample as CSV");
-    c->add_option("--plot", a->plot, "draw the chart (.png or .svg) with matplotlib");
+    c->add_option("--csv", a->csv, "write every sample as CSV")->check(outputFile());
+    c->add_option("--plot", a->plot, "draw the chart (.png or .svg) with matplotlib")->check(outputFile());
     c->add_option("--spp", a->spp, "most jittered samples per pixel")->check(CLI::Range(1, 1024))
         ->capture_default_str();
     c->add_option("--ref-grid", a->refGrid, "the reference takes ref-grid^2 regular samples per pixel")

@@ -123,7 +123,7 @@ void addStabilityCommand(CLI::App& app, Commands& out) {
     CLI::App* c = app.add_subcommand("stability", "run the stiff-scene suite with every cache and order, "
                                                   "or compare intersection formulas (--intersection)");
     c->add_option("--suite", a->suite, "directory of stiff NFF scenes (default: tests/stiff of the source tree)");
-    c->add_option("--json", a->json, "also write the results as JSON");
+    c->add_option("--json", a->json, "also write the results as JSON")->check(outputFile());
     c->add_option("--scene", a->only, "only the scenes whose name contains this");
     c->add_option("--depth", a->depth, "maximum ray-tree depth")->check(CLI::Range(1, 64))->capture_default_str();
     c->add_flag("--intersection", a->intersection,

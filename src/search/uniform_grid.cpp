@@ -8,6 +8,16 @@
 
 namespace rc {
 
+namespace {
+/// The cell of a coordinate measured in cells, clamped to [0, res - 1] before it is
+/// converted: a far point (a light at 1e100) or NaN would overflow int (undefined).
+int clampedCell(double x, int res) {
+    if (!(x >= 0.0)) return 0;
+    if (x >= double(res - 1)) return res - 1;
+    return int(x);  // floor, as x >= 0
+}
+}  // namespace
+
 UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(scene), mailbox_(scene.size(), 0) {
     if (scene.size() == 0) {
         cellStart_.assign(2, 0);
@@ -28,7 +38,7 @@ UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(sc
     const double volume = std::max(size.x * size.y * size.z, 1e-300);
     const double cellsWanted = std::max(1.0, density * scene.size());
     const double side = std::cbrt(volume / cellsWanted);
-    for (int a = 0; a < 3; ++a) res_[a] = std::clamp(int(std::ceil(size[a] / side)), 1, 128);
+    for (int a = 0; a < 3; ++a) res_[a] = 1 + clampedCell(std::ceil(size[a] / side) - 1.0, 128);
     cellSize_ = size / Vec3(res_[0], res_[1], res_[2]);
 
     // Count, then fill (compressed rows)
@@ -38,8 +48,8 @@ UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(sc
         const Vec3 olo = (o.bound.c - Vec3(o.bound.r + pad) - lo_) / cellSize_;
         const Vec3 ohi = (o.bound.c + Vec3(o.bound.r + pad) - lo_) / cellSize_;
         for (int k = 0; k < 3; ++k) {
-            a[k] = std::clamp(int(std::floor(olo[k])), 0, res_[k] - 1);
-            b[k] = std::clamp(int(std::floor(ohi[k])), 0, res_[k] - 1);
+            a[k] = clampedCell(olo[k], res_[k]);
+            b[k] = clampedCell(ohi[k], res_[k]);
         }
     };
     for (int pass = 0; pass < 2; ++pass) {
@@ -68,8 +78,8 @@ std::vector<int> UniformGrid::objectsInBox(const Vec3& lo, const Vec3& hi) const
     if (ids_.empty()) return out;
     std::array<int, 3> a, b;
     for (int k = 0; k < 3; ++k) {
-        a[k] = std::clamp(int(std::floor((lo[k] - lo_[k]) / cellSize_[k])), 0, res_[k] - 1);
-        b[k] = std::clamp(int(std::floor((hi[k] - lo_[k]) / cellSize_[k])), 0, res_[k] - 1);
+        a[k] = clampedCell((lo[k] - lo_[k]) / cellSize_[k], res_[k]);
+        b[k] = clampedCell((hi[k] - lo_[k]) / cellSize_[k], res_[k]);
     }
     for (int z = a[2]; z <= b[2]; ++z)
         for (int y = a[1]; y <= b[1]; ++y)
@@ -109,7 +119,7 @@ Answer UniformGrid::nearest(const Query& q, Counters& n) const {
     int cell[3], step[3], stop[3];
     double next[3], delta[3];
     for (int k = 0; k < 3; ++k) {
-        cell[k] = std::clamp(int(std::floor((p[k] - lo_[k]) / cellSize_[k])), 0, res_[k] - 1);
+        cell[k] = clampedCell((p[k] - lo_[k]) / cellSize_[k], res_[k]);
         if (r.d[k] > 0.0) {
             step[k] = 1;
             stop[k] = res_[k];
