@@ -26,15 +26,7 @@ private:
 };
 
 int material(Scene& s, Vec3 color, double kd, double ks, double shine, double kt = 0.0, double ior = 1.0) {
-    Material m;
-    m.color = color;
-    m.kd = kd;
-    m.ks = ks;
-    m.shine = shine;
-    m.kt = kt;
-    m.ior = ior;
-    s.materials.push_back(m);
-    return int(s.materials.size()) - 1;
+    return s.addMaterial({color, kd, ks, shine, kt, ior});
 }
 
 void view(Scene& s, Vec3 from, Vec3 at, double angle, int size = 64) {

@@ -32,22 +32,6 @@ private:
     std::mt19937_64 gen_;
 };
 
-Material mat(Vec3 color, double kd, double ks, double shine, double kt = 0.0, double ior = 1.0) {
-    Material m;
-    m.color = color;
-    m.kd = kd;
-    m.ks = ks;
-    m.shine = shine;
-    m.kt = kt;
-    m.ior = ior;
-    return m;
-}
-
-int addMaterial(Scene& s, const Material& m) {
-    s.materials.push_back(m);
-    return int(s.materials.size()) - 1;
-}
-
 const std::array<Vec3, 5> kPalette = {Vec3(0.90, 0.30, 0.25), Vec3(0.30, 0.80, 0.35),
                                       Vec3(0.30, 0.45, 0.90), Vec3(0.95, 0.80, 0.30),
                                       Vec3(0.85, 0.85, 0.85)};
@@ -60,7 +44,7 @@ Scene makeCube(int n, std::uint64_t seed) {
     s.background = Vec3(0.15, 0.18, 0.24);
     int materials[kPalette.size()];
     for (std::size_t i = 0; i < kPalette.size(); ++i)
-        materials[i] = addMaterial(s, mat(kPalette[i], 0.6, 0.4, 30.0));
+        materials[i] = s.addMaterial({kPalette[i], 0.6, 0.4, 30.0});
     Random rnd(seed);
     const double half = 0.5 * (n - 1);
     for (int i = 0; i < n; ++i)
@@ -101,12 +85,12 @@ Scene makeGlass(std::uint64_t seed) {
     Scene s;
     s.name = "glass";
     s.background = Vec3(0.20, 0.25, 0.35);
-    const int ground = addMaterial(s, mat(Vec3(0.75, 0.75, 0.70), 0.9, 0.0, 0.0));
-    const int glass = addMaterial(s, mat(Vec3(1.0), 0.05, 0.15, 100.0, 0.85, 1.5));
-    const int red = addMaterial(s, mat(kPalette[0], 0.7, 0.3, 40.0));
-    const int green = addMaterial(s, mat(kPalette[1], 0.7, 0.3, 40.0));
-    const int blue = addMaterial(s, mat(kPalette[2], 0.7, 0.3, 40.0));
-    const int gold = addMaterial(s, mat(kPalette[3], 0.7, 0.3, 40.0));
+    const int ground = s.addMaterial({Vec3(0.75, 0.75, 0.70), 0.9, 0.0, 0.0});
+    const int glass = s.addMaterial({Vec3(1.0), 0.05, 0.15, 100.0, 0.85, 1.5});
+    const int red = s.addMaterial({kPalette[0], 0.7, 0.3, 40.0});
+    const int green = s.addMaterial({kPalette[1], 0.7, 0.3, 40.0});
+    const int blue = s.addMaterial({kPalette[2], 0.7, 0.3, 40.0});
+    const int gold = s.addMaterial({kPalette[3], 0.7, 0.3, 40.0});
 
     // Ground: a 16 x 16 square at y = 0, normal up
     Polygon floor;
@@ -156,7 +140,7 @@ Scene makeFill() {
     Scene s;
     s.name = "fill";
     s.background = Vec3(0.0);
-    s.addSphere(Sphere{Vec3(0.0), 1.0}, addMaterial(s, mat(Vec3(0.8, 0.6, 0.4), 0.9, 0.0, 0.0)));
+    s.addSphere(Sphere{Vec3(0.0), 1.0}, s.addMaterial({Vec3(0.8, 0.6, 0.4), 0.9, 0.0, 0.0}));
     // From 1.6 radii the sphere subtends asin(1/1.6) = 38.7 degrees; the corner rays of
     // a 40 degree view are atan(sqrt(2) tan 20) = 27.2 degrees off axis
     Camera& cam = s.camera;
@@ -176,8 +160,8 @@ Scene makePair() {
     Scene s;
     s.name = "pair";
     s.background = Vec3(0.10, 0.10, 0.15);
-    s.addSphere(Sphere{Vec3(0.0), 1.0}, addMaterial(s, mat(Vec3(0.85, 0.85, 0.9), 0.15, 0.85, 100.0)));
-    s.addSphere(Sphere{Vec3(1.1, 0.7, 1.4), 0.35}, addMaterial(s, mat(kPalette[0], 0.8, 0.2, 20.0)));
+    s.addSphere(Sphere{Vec3(0.0), 1.0}, s.addMaterial({Vec3(0.85, 0.85, 0.9), 0.15, 0.85, 100.0}));
+    s.addSphere(Sphere{Vec3(1.1, 0.7, 1.4), 0.35}, s.addMaterial({kPalette[0], 0.8, 0.2, 20.0}));
     Camera& cam = s.camera;
     cam.from = Vec3(0.0, 0.3, 5.0);
     cam.at = Vec3(0.0);

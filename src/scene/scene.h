@@ -46,6 +46,11 @@ struct Scene {
     std::vector<Object> objects;
     Sphere bound;  ///< holds every object; set by finalize()
 
+    /// Adds a material; returns its index.
+    int addMaterial(const Material& m) {
+        materials.push_back(m);
+        return int(materials.size()) - 1;
+    }
     /// Adds a sphere with a material index; returns its object id.
     int addSphere(const Sphere& s, int material);
     /// Adds a polygon (made with makePolygon) with a material; returns its object id.
