@@ -34,8 +34,8 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     const Sphere a = siteSphere(origin);
     const Sphere b = siteSphere(target);
     std::vector<int> candidates;
-    search_.objectsNear(glm::min(a.c - Vec3(a.r), b.c - Vec3(b.r)) - Vec3(slack_),
-                        glm::max(a.c + Vec3(a.r), b.c + Vec3(b.r)) + Vec3(slack_), candidates);
+    // The hull lies within the larger radius of the segment between the centres
+    search_.objectsNearSegment(a.c, b.c, std::max(a.r, b.r) + slack_, candidates);
     std::vector<std::pair<double, int>> found;
     for (int id : candidates) {
         if (id == target) continue;

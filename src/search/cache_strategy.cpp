@@ -69,7 +69,7 @@ void CacheStrategy::buildCylinder(CacheEntry& e, Counters& n) const {
     // Only objects near the segment can set the radius; the search says which, and caps it
     double radius = search_.nearRadius();
     std::vector<int>& candidates = scratch_;
-    search_.objectsNear(glm::min(from, to) - Vec3(radius), glm::max(from, to) + Vec3(radius), candidates);
+    search_.objectsNearSegment(from, to, radius, candidates);
     for (int id : candidates) {
         if (id == e.object) continue;
         if (id == e.origin.object && !e.origin.inside) continue;  // cannot be met again

@@ -20,6 +20,9 @@ public:
     /// Objects whose bounding spheres may overlap the box [lo, hi], ascending (every object
     /// may be returned). Caches build blocker lists and cylinders of safety from these.
     virtual void objectsNear(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
+    /// Objects whose bounding spheres may come within `radius` of the segment a-b (every
+    /// object may be returned; by default, those of the segment's widened box).
+    virtual void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const;
     /// Cylinders of safety are capped at this radius, so that objectsNear() of a segment's
     /// box widened by it is enough to build them (infinite: no cap, all objects).
     virtual double nearRadius() const { return kNoHit; }

@@ -92,20 +92,18 @@ std::vector<int> UniformGrid::objectsInBox(const Vec3& lo, const Vec3& hi) const
     return out;
 }
 
-Answer UniformGrid::nearest(const Query& q, Counters& n) const {
-    Answer best;
-    if (ids_.empty()) return best;
-    if (++stamp_ == 0) {  // wrapped: forget every mark
-        std::fill(mailbox_.begin(), mailbox_.end(), 0);
-        stamp_ = 1;
-    }
+template <class Visit>
+void UniformGrid::walk(const Ray& r, double tmax, int margin, Visit visit) const {
+    // The grid widened by `margin` cells on every side (cells indexed from -margin)
+    const Vec3 lo_ = this->lo_ - double(margin) * cellSize_;
+    const Vec3 hi_ = this->hi_ + double(margin) * cellSize_;
+    const std::array<int, 3> res_{this->res_[0] + 2 * margin, this->res_[1] + 2 * margin, this->res_[2] + 2 * margin};
     // [grid-walk]
     // Clip the ray to the grid's box (slab test)
-    const Ray& r = q.ray;
-    double t0 = 0.0, t1 = q.tmax;
+    double t0 = 0.0, t1 = tmax;
     for (int k = 0; k < 3; ++k) {
         if (r.d[k] == 0.0) {
-            if (r.o[k] < lo_[k] || r.o[k] > hi_[k]) return best;
+            if (r.o[k] < lo_[k] || r.o[k] > hi_[k]) return;
             continue;
         }
         double a = (lo_[k] - r.o[k]) / r.d[k], b = (hi_[k] - r.o[k]) / r.d[k];
@@ -113,7 +111,7 @@ Answer UniformGrid::nearest(const Query& q, Counters& n) const {
         t0 = std::max(t0, a);
         t1 = std::min(t1, b);
     }
-    if (!(t0 <= t1)) return best;
+    if (!(t0 <= t1)) return;
     // The first cell, and how far to each next cell boundary (Amanatides and Woo)
     const Vec3 p = r.at(t0);
     int cell[3], step[3], stop[3];
@@ -138,6 +136,30 @@ Answer UniformGrid::nearest(const Query& q, Counters& n) const {
         }
     }
     for (;;) {
+        // Visit the cell; it says whether to go on, knowing where the ray leaves it
+        const int k = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
+        const double exit = next[k];
+        const int at[3] = {cell[0] - margin, cell[1] - margin, cell[2] - margin};
+        if (!visit(at, exit) || exit > t1) break;
+        cell[k] += step[k];
+        if (cell[k] == stop[k]) break;
+        next[k] += delta[k];
+    }
+    // [grid-walk]
+}
+
+void UniformGrid::newStamp() const {
+    if (++stamp_ == 0) {  // wrapped: forget every mark
+        std::fill(mailbox_.begin(), mailbox_.end(), 0);
+        stamp_ = 1;
+    }
+}
+
+Answer UniformGrid::nearest(const Query& q, Counters& n) const {
+    Answer best;
+    if (ids_.empty()) return best;
+    newStamp();
+    walk(q.ray, q.tmax, 0, [&](const int* cell, double exit) {
         // Test the cell's objects, each once per ray
         const int c = cellIndex(cell[0], cell[1], cell[2]);
         for (std::uint32_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
@@ -147,15 +169,39 @@ Answer UniformGrid::nearest(const Query& q, Counters& n) const {
             testObject(scene_, q, id, best, n);
         }
         // A hit before this cell's exit is final (a hair of margin keeps ties exact)
-        const int k = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
-        const double exit = next[k];
-        if (best.t < exit * (1.0 - 1e-12) - 1e-300 || exit > t1) break;
-        cell[k] += step[k];
-        if (cell[k] == stop[k]) break;
-        next[k] += delta[k];
-    }
-    // [grid-walk]
+        return !(best.t < exit * (1.0 - 1e-12) - 1e-300);
+    });
     return best;
+}
+
+void UniformGrid::objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const {
+    out.clear();
+    if (ids_.empty()) return;
+    // Cells within `ring` cells of those the segment crosses hold everything within `radius`
+    const double side = nearRadius();
+    const int ring = int(std::ceil(radius / side));
+    if (ring > 3) {  // a wide neighbourhood: the box is cheaper
+        out = objectsInBox(glm::min(a, b) - Vec3(radius), glm::max(a, b) + Vec3(radius));
+        return;
+    }
+    newStamp();
+    const double length = glm::length(b - a);
+    const Ray r{a, length > 0.0 ? (b - a) / length : Vec3(1.0, 0.0, 0.0)};
+    // Walk the grid widened by the ring, so parts of the segment just outside it count too
+    walk(r, length, ring, [&](const int* cell, double) {
+        for (int z = std::max(0, cell[2] - ring); z <= std::min(res_[2] - 1, cell[2] + ring); ++z)
+            for (int y = std::max(0, cell[1] - ring); y <= std::min(res_[1] - 1, cell[1] + ring); ++y)
+                for (int x = std::max(0, cell[0] - ring); x <= std::min(res_[0] - 1, cell[0] + ring); ++x) {
+                    const int c = cellIndex(x, y, z);
+                    for (std::uint32_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
+                        const int id = ids_[i];
+                        if (mailbox_[id] == stamp_) continue;
+                        mailbox_[id] = stamp_;
+                        out.push_back(id);
+                    }
+                }
+        return true;
+    });
 }
 
 }  // namespace rc

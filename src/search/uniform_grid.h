@@ -26,11 +26,20 @@ public:
     void objectsNear(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const override {
         out = objectsInBox(lo, hi);
     }
+    /// Objects whose bounding boxes come within `radius` of the segment a-b, and maybe a
+    /// few more: the cells within ceil(radius / smallest side) cells of those it crosses.
+    void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const override;
     /// The smallest side of a cell.
     double nearRadius() const override { return std::min(cellSize_.x, std::min(cellSize_.y, cellSize_.z)); }
 
 private:
     int cellIndex(int x, int y, int z) const { return (z * res_[1] + y) * res_[0] + x; }
+    /// 3D-DDA along `r` up to `tmax` over the grid widened by `margin` cells; `visit(cell,
+    /// exit)` gets each cell (indices may be outside [0, res) by up to `margin`) and the
+    /// distance where the ray leaves it, and returns whether to go on.
+    template <class Visit>
+    void walk(const Ray& r, double tmax, int margin, Visit visit) const;
+    void newStamp() const;
     Vec3 lo_{0.0}, hi_{0.0}, cellSize_{1.0};
     std::array<int, 3> res_{1, 1, 1};
     std::vector<std::uint32_t> cellStart_;  ///< CSR: objects of cell c are ids_[start[c], start[c+1])
