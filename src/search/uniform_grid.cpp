@@ -179,11 +179,12 @@ void UniformGrid::objectsNearSegment(const Vec3& a, const Vec3& b, double radius
     if (ids_.empty()) return;
     // Cells within `ring` cells of those the segment crosses hold everything within `radius`
     const double side = nearRadius();
-    const int ring = int(std::ceil(radius / side));
-    if (ring > 3) {  // a wide neighbourhood: the box is cheaper
+    const double rings = std::ceil(radius / side);
+    if (!(rings <= 3.0)) {  // a wide neighbourhood (or an absurd radius): the box is cheaper
         out = objectsInBox(glm::min(a, b) - Vec3(radius), glm::max(a, b) + Vec3(radius));
         return;
     }
+    const int ring = int(rings);
     newStamp();
     const double length = glm::length(b - a);
     const Ray r{a, length > 0.0 ? (b - a) / length : Vec3(1.0, 0.0, 0.0)};
