@@ -95,18 +95,18 @@ std::vector<int> UniformGrid::objectsInBox(const Vec3& lo, const Vec3& hi) const
 template <class Visit>
 void UniformGrid::walk(const Ray& r, double tmax, int margin, Visit visit) const {
     // The grid widened by `margin` cells on every side (cells indexed from -margin)
-    const Vec3 lo_ = this->lo_ - double(margin) * cellSize_;
-    const Vec3 hi_ = this->hi_ + double(margin) * cellSize_;
-    const std::array<int, 3> res_{this->res_[0] + 2 * margin, this->res_[1] + 2 * margin, this->res_[2] + 2 * margin};
+    const Vec3 lo = lo_ - double(margin) * cellSize_;
+    const Vec3 hi = hi_ + double(margin) * cellSize_;
+    const std::array<int, 3> res{res_[0] + 2 * margin, res_[1] + 2 * margin, res_[2] + 2 * margin};
     // [grid-walk]
     // Clip the ray to the grid's box (slab test)
     double t0 = 0.0, t1 = tmax;
     for (int k = 0; k < 3; ++k) {
         if (r.d[k] == 0.0) {
-            if (r.o[k] < lo_[k] || r.o[k] > hi_[k]) return;
+            if (r.o[k] < lo[k] || r.o[k] > hi[k]) return;
             continue;
         }
-        double a = (lo_[k] - r.o[k]) / r.d[k], b = (hi_[k] - r.o[k]) / r.d[k];
+        double a = (lo[k] - r.o[k]) / r.d[k], b = (hi[k] - r.o[k]) / r.d[k];
         if (a > b) std::swap(a, b);
         t0 = std::max(t0, a);
         t1 = std::min(t1, b);
@@ -117,16 +117,16 @@ void UniformGrid::walk(const Ray& r, double tmax, int margin, Visit visit) const
     int cell[3], step[3], stop[3];
     double next[3], delta[3];
     for (int k = 0; k < 3; ++k) {
-        cell[k] = clampedCell((p[k] - lo_[k]) / cellSize_[k], res_[k]);
+        cell[k] = clampedCell((p[k] - lo[k]) / cellSize_[k], res[k]);
         if (r.d[k] > 0.0) {
             step[k] = 1;
-            stop[k] = res_[k];
-            next[k] = (lo_[k] + (cell[k] + 1) * cellSize_[k] - r.o[k]) / r.d[k];
+            stop[k] = res[k];
+            next[k] = (lo[k] + (cell[k] + 1) * cellSize_[k] - r.o[k]) / r.d[k];
             delta[k] = cellSize_[k] / r.d[k];
         } else if (r.d[k] < 0.0) {
             step[k] = -1;
             stop[k] = -1;
-            next[k] = (lo_[k] + cell[k] * cellSize_[k] - r.o[k]) / r.d[k];
+            next[k] = (lo[k] + cell[k] * cellSize_[k] - r.o[k]) / r.d[k];
             delta[k] = -cellSize_[k] / r.d[k];
         } else {
             step[k] = 0;
