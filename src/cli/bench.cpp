@@ -36,7 +36,7 @@ double median(std::vector<double> v) {
 
 int bench(const BenchArgs& a) {
     std::vector<Config> configs;
-    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid}) {
+    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
         configs.push_back({accel, CacheKind::None, OrderKind::Scanline});
         for (CacheKind cache : {CacheKind::Cylinder, CacheKind::Blocker})
             for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) configs.push_back({accel, cache, order});

@@ -61,8 +61,8 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
         c->add_option("--order", f.order, "scanline | progressive | bfs")
             ->check(CLI::IsMember(kOrders))->capture_default_str();
     }
-    c->add_option("--accel", f.accel, "complete search: linear | grid | embree (comparison only)")
-        ->check(CLI::IsMember({"linear", "grid", "embree"}))->capture_default_str();
+    c->add_option("--accel", f.accel, "complete search: linear | grid | bvh | embree (comparison only)")
+        ->check(CLI::IsMember({"linear", "grid", "bvh", "embree"}))->capture_default_str();
     c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
     c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, 16384));
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")

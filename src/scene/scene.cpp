@@ -8,7 +8,7 @@
 
 namespace rc {
 
-int Scene::addSphere(const Sphere& s, int mat) {
+int Scene::addSphere(Sphere s, int mat) {
     spheres.push_back(s);
     objects.push_back({Shape::Sphere, int(spheres.size()) - 1, mat, s});
     return int(objects.size()) - 1;

@@ -52,7 +52,7 @@ struct Scene {
         return int(materials.size()) - 1;
     }
     /// Adds a sphere with a material index; returns its object id.
-    int addSphere(const Sphere& s, int material);
+    int addSphere(Sphere s, int material);  // by value: s may be an element of `spheres`
     /// Adds a polygon (made with makePolygon) with a material; returns its object id.
     int addPolygon(Polygon p, int material);
     /// Computes `bound`. Call once after the last add.

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// \brief Choosing the complete search: a linear scan or a uniform grid.
+/// \brief Choosing the complete search: a linear scan, a uniform grid, a bounding volume hierarchy
+/// or (for comparison) Embree.
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -11,7 +12,7 @@ namespace rc {
 
 /// Which structure answers complete searches. Any cache sits in front of any of them.
 /// Embree is for comparison only: single precision, so not covered by the exactness guarantee.
-enum class AccelKind { Linear, Grid, Embree };
+enum class AccelKind { Linear, Grid, Bvh, Embree };
 std::string_view toString(AccelKind k);
 std::optional<AccelKind> parseAccelKind(std::string_view s);
 

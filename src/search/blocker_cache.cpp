@@ -105,36 +105,45 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     // [empty-cone]
     // Rays leave from anywhere in the origin's sphere (a point for the eye): direction d
     // misses sphere j if its angle theta_j to c_j exceeds beta_j = asin((r_j + r_origin) / dist)
+    struct EmptyCone final : SphereCull {
+        EmptyCone(const Scene& scene, const Sphere& from, const Vec3& axis, double reach, const RayOrigin& origin)
+            : scene(scene), from(from), axis(axis), reach(reach), origin(origin) {
+            limit = kNoHit;
+        }
+        // How far the axis is from the cone of directions into s, theta - beta, measured
+        // without trigonometry as 1 - cos(theta - beta) (negative when the axis is inside)
+        double distance(const Sphere& s) override {
+            const Vec3 v = s.c - from.c;
+            const double dist = glm::length(v);
+            const double sinB = (s.r + reach) / dist;
+            if (!(sinB < 1.0)) return -kNoHit;  // it touches the origin
+            const double cosB = std::sqrt(1.0 - sinB * sinB);
+            const double sinT = glm::length(glm::cross(axis, v)) / dist, cosT = glm::dot(axis, v) / dist;
+            const double gap = 1.0 - (cosT * cosB + sinT * sinB);
+            return sinT * cosB - cosT * sinB < 0.0 ? -gap : gap;
+        }
+        // The exact angle, for the few objects that come nearer than any before
+        void found(int id, double) override {
+            // A ray leaving an object outward cannot meet it again; one heading into it can
+            if (id == origin.object && !origin.inside) return;
+            const Sphere& s = scene.objects[id].bound;
+            const Vec3 v = s.c - from.c;
+            const double sinB = (s.r + reach) / glm::length(v);
+            angle = sinB < 1.0 ? std::min(angle, angleBetween(axis, v) - std::asin(sinB)) : -1.0;
+            // Nothing farther can narrow the cone; with no cone at all, nothing can matter
+            limit = angle < 0.0 ? -kNoHit : 1.0 - std::cos(angle) + 1e-12;
+        }
+        const Scene& scene;
+        Sphere from;
+        Vec3 axis;
+        double reach;
+        RayOrigin origin;
+        double angle = kNoHit;  ///< no object: every direction hits nothing
+    };
     const Sphere from = lists_.siteSphere(lists_.originSite(e.origin));
-    const Vec3 axis = e.coneAxis;
-    const double reach = from.r + slack_;
-    // First pass without trigonometry: the smallest theta_j - beta_j has the largest cosine
-    std::vector<double>& cosines = coneScratch_;
-    cosines.assign(std::size_t(scene_.size()), -2.0);
-    double best = -2.0;
-    for (int id = 0; id < scene_.size(); ++id) {
-        // A ray leaving an object outward cannot meet it again; one heading into it can
-        if (id == e.origin.object && !e.origin.inside) continue;
-        const Sphere& s = scene_.objects[id].bound;
-        const Vec3 v = s.c - from.c;
-        const double dist = glm::length(v);
-        const double sinB = (s.r + reach) / dist;
-        if (!(sinB < 1.0)) { best = 2.0; break; }  // touching the origin: no cone
-        const double cosB = std::sqrt(1.0 - sinB * sinB);
-        const double sinT = glm::length(glm::cross(axis, v)) / dist, cosT = glm::dot(axis, v) / dist;
-        if (sinT * cosB - cosT * sinB < 0.0) { best = 2.0; break; }  // d points into j's cone
-        cosines[id] = cosT * cosB + sinT * sinB;
-        best = std::max(best, cosines[id]);
-    }
-    // Second pass, exact angles for the few nearest the axis
-    double angle = best > 1.0 ? -1.0 : kNoHit;
-    for (int id = 0; id < scene_.size() && angle > 0.0; ++id) {
-        if (cosines[id] < best - 1e-12) continue;
-        const Sphere& s = scene_.objects[id].bound;
-        const Vec3 v = s.c - from.c;
-        angle = std::min(angle, angleBetween(axis, v) - std::asin((s.r + reach) / glm::length(v)));
-    }
-    e.coneAngle = angle - 1e-9;
+    EmptyCone cone(scene_, from, e.coneAxis, from.r + slack_, e.origin);
+    search_.cull(cone);
+    e.coneAngle = cone.angle - 1e-9;
     // [empty-cone]
     ++n.cylindersBuilt;
 }

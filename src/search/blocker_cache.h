@@ -28,7 +28,6 @@ private:
     Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, Counters& n);
     void buildCone(CacheEntry& e, Counters& n) const;
     BlockerLists lists_;
-    mutable std::vector<double> coneScratch_;
 };
 
 }  // namespace rc

@@ -57,6 +57,7 @@ private:
     int sites_;
     double slack_;
     std::unordered_map<std::uint64_t, BlockerList> lists_;
+    std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
 };
 
 }  // namespace rc

@@ -64,19 +64,25 @@ void CacheStrategy::keepSegment(const Query& q, const Answer& a, CacheEntry& e) 
 void CacheStrategy::buildCylinder(CacheEntry& e, Counters& n) const {
     // [build-cylinder]
     // The radius is the distance from the segment to the nearest other surface
-    const Vec3 from = e.cylinder.a;
-    const Vec3 to = e.cylinder.b;
-    // Only objects near the segment can set the radius; the search says which, and caps it
-    double radius = search_.nearRadius();
-    std::vector<int>& candidates = scratch_;
-    search_.objectsNearSegment(from, to, radius, candidates);
-    for (int id : candidates) {
-        if (id == e.object) continue;
-        if (id == e.origin.object && !e.origin.inside) continue;  // cannot be met again
-        const Sphere& s = scene_.objects[id].bound;
-        radius = std::min(radius, segmentDistance(s.c, from, to) - s.r);
-    }
-    e.cylinder = {from, to, radius - slack_};
+    struct Clearance final : SphereCull {
+        const CacheEntry& e;
+        Clearance(const CacheEntry& e, double cap) : e(e) {
+            a = e.cylinder.a;
+            b = e.cylinder.b;
+            radius = limit = cap;
+        }
+        // How near the segment a sphere inside s can come
+        double distance(const Sphere& s) override { return segmentDistance(s.c, a, b) - s.r; }
+        void found(int id, double d) override {
+            if (id == e.object) return;
+            if (id == e.origin.object && !e.origin.inside) return;  // cannot be met again
+            limit = std::min(limit, d);
+        }
+    };
+    // Only objects near the segment can set the radius; the search finds them (and may cap it)
+    Clearance clearance(e, search_.nearRadius());
+    search_.cull(clearance);
+    e.cylinder.radius = clearance.limit - slack_;
     // [build-cylinder]
     ++n.cylindersBuilt;
 }

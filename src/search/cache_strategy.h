@@ -66,7 +66,6 @@ protected:
     const Scene& scene_;
     const CompleteSearch& search_;
     double slack_;  ///< a few ulps of the scene's size: shrinks cylinders and cones
-    mutable std::vector<int> scratch_;  ///< candidates of the cylinder being built
 };
 
 /// Makes the strategy of a kind.

@@ -6,38 +6,67 @@
 #include <vector>
 
 #include "search/query.h"
+#include "search/sphere_batch.h"
 
 namespace rc {
 
-/// Finds the nearest hit over the whole scene. Implementations (a linear scan now, a grid
-/// or BVH later) must return exactly what the linear scan returns, ties included.
+/// A question about the objects' bounding spheres that every complete search can answer:
+/// which objects meet a region (a blocker hull, a capsule, a cone of directions)? The
+/// question measures how far a sphere lies from the region, and an object meets it when
+/// its bounding sphere lies within `limit`. The measure must be a lower bound for every
+/// sphere inside the one measured, so a hierarchy may skip everything under a bounding
+/// sphere beyond the limit, and open the nearest first. The limit may shrink as objects
+/// are found (a cylinder of safety narrows with each one).
+class SphereCull {
+public:
+    virtual ~SphereCull() = default;
+    /// How far sphere `s`, or any sphere inside it, lies from the region (at least).
+    virtual double distance(const Sphere& s) = 0;
+    /// Object `id`, whose bounding sphere lies at `distance` <= limit. May lower the limit.
+    virtual void found(int id, double distance) = 0;
+    double limit = 0.0;
+    /// A hint for searches that cannot descend by spheres (a grid): every object that meets
+    /// lies within `radius` of the segment a-b (infinite: anywhere).
+    Vec3 a{0.0}, b{0.0};
+    double radius = kNoHit;
+};
+
+/// Finds the nearest hit over the whole scene. Implementations (a linear scan, a grid, a
+/// BVH) must return exactly what the linear scan returns, ties included.
 class CompleteSearch {
 public:
     virtual ~CompleteSearch() = default;
     /// The nearest hit of `q`, counting every ray-object test in `n`.
     virtual Answer nearest(const Query& q, Counters& n) const = 0;
     virtual std::string name() const = 0;
-    /// Objects whose bounding spheres may overlap the box [lo, hi], ascending (every object
-    /// may be returned). Caches build blocker lists and cylinders of safety from these.
-    virtual void objectsNear(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const;
+    /// Calls `c.found` for every object whose bounding sphere meets `c`. By default, measures
+    /// the objects objectsNearSegment() returns for the hint (all of them for a linear scan).
+    virtual void cull(SphereCull& c) const;
     /// Objects whose bounding spheres may come within `radius` of the segment a-b (every
-    /// object may be returned; by default, those of the segment's widened box).
+    /// object may be returned, and is by default).
     virtual void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const;
-    /// Cylinders of safety are capped at this radius, so that objectsNear() of a segment's
-    /// box widened by it is enough to build them (infinite: no cap, all objects).
+    /// Cylinders of safety are capped at this radius, so that objectsNearSegment() of the
+    /// segment is enough to build them (infinite: no cap). Where it is finite, cull() cannot
+    /// find the objects near a direction cheaply, so the caches build no empty cones.
     virtual double nearRadius() const { return kNoHit; }
 
 protected:
     explicit CompleteSearch(const Scene& scene) : scene_(scene) {}
     const Scene& scene_;
+
+private:
+    mutable std::vector<int> candidates_;  ///< scratch of the default cull()
 };
 
 /// Tests every object in the scene: the paper's "standard ray-tracing algorithm".
 class LinearSearch final : public CompleteSearch {
 public:
-    explicit LinearSearch(const Scene& scene) : CompleteSearch(scene) {}
+    explicit LinearSearch(const Scene& scene);
     Answer nearest(const Query& q, Counters& n) const override;
     std::string name() const override { return "linear"; }
+
+private:
+    SphereBatch all_;  ///< every object, in id order
 };
 
 }  // namespace rc

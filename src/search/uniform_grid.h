@@ -23,9 +23,6 @@ public:
     std::array<int, 3> resolution() const { return res_; }
     /// Objects whose bounding boxes overlap the box [lo, hi] (each once, ascending).
     std::vector<int> objectsInBox(const Vec3& lo, const Vec3& hi) const;
-    void objectsNear(const Vec3& lo, const Vec3& hi, std::vector<int>& out) const override {
-        out = objectsInBox(lo, hi);
-    }
     /// Objects whose bounding boxes come within `radius` of the segment a-b, and maybe a
     /// few more: the cells within ceil(radius / smallest side) cells of those it crosses.
     void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const override;

@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// \brief Objects stored for the complete search's inner loop: sphere centres and squared
+/// radii in arrays of their own (structure of arrays), so a run of tests is one tight
+/// loop with no lookup through the scene and no call for the common case, a miss.
+#include <cstddef>
+#include <vector>
+
+#include "search/query.h"
+
+namespace rc {
+
+/// A run of objects to test against rays. Spheres are rejected in the loop when their
+/// discriminant is clearly negative; everything else (a possible hit, a polygon, the
+/// ray's own origin object) goes through testObject(), so the answers and the counts are
+/// exactly those of a plain loop over testObject().
+class SphereBatch {
+public:
+    /// Appends object `id` of `scene`.
+    void add(const Scene& scene, int id);
+    std::size_t size() const { return ids_.size(); }
+    int id(std::size_t i) const { return ids_[i]; }
+
+    /// Tests objects [begin, end) against `q`, keeping the nearest in `best`.
+    void test(const Scene& scene, const Query& q, std::size_t begin, std::size_t end, Answer& best,
+              Counters& n) const {
+        // [sphere-batch]
+        const Vec3 o = q.ray.o, d = q.ray.d;
+        for (std::size_t i = begin; i < end; ++i) {
+            const int id = ids_[i];
+            if (radius2_[i] < 0.0 || id == q.origin.object) {
+                testObject(scene, q, id, best, n);  // a polygon, or the surface the ray leaves
+                continue;
+            }
+            // The stable discriminant, as sphereRootsStable() computes it
+            ++n.intersectionTests;
+            const double fx = o.x - x_[i], fy = o.y - y_[i], fz = o.z - z_[i];
+            const double b = fx * d.x + fy * d.y + fz * d.z;
+            const double lx = fx - b * d.x, ly = fy - b * d.y, lz = fz - b * d.z;
+            const double disc = radius2_[i] - (lx * lx + ly * ly + lz * lz);
+            // Clearly negative: a miss. A margin of rounding absorbs any difference in how
+            // the compiler fused the two copies of this arithmetic.
+            if (disc < -1e-12 * (fx * fx + fy * fy + fz * fz + radius2_[i])) continue;
+            const double t = scene.intersect(q.ray, id, q.origin);
+            if (t < q.tmax && nearer(t, id, best)) best = {id, t};
+        }
+        // [sphere-batch]
+    }
+
+private:
+    std::vector<int> ids_;
+    std::vector<double> x_, y_, z_;
+    std::vector<double> radius2_;  ///< r * r; negative for a polygon
+};
+
+}  // namespace rc
