@@ -130,7 +130,7 @@ int renderEveryWay(const std::shared_ptr<const Scene>& scene, int size, int dept
     int renders = 0;
     for (CacheKind cache : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker})
         for (OrderKind order : {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst})
-            for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid}) {
+            for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
                 RenderOptions o;
                 o.width = size;
                 o.height = size;

@@ -28,7 +28,7 @@ void grow(double* lo, double* hi, const double* box) {
 /// Where the ray enters the box within [0, limit], or -1 if it does not. A zero
 /// direction component gives 0 * inf = NaN, which the min/max below ignore: the slab
 /// counts as entered, which can only open more boxes.
-double entry(const double* lo, const double* hi, const Vec3& o, const double* inv, double limit) {
+[[gnu::always_inline]] inline double entry(const double* lo, const double* hi, const Vec3& o, const double* inv, double limit) {
     double t0 = 0.0, t1 = limit;
     for (int k = 0; k < 3; ++k) {
         const double a = (lo[k] - o[k]) * inv[k], b = (hi[k] - o[k]) * inv[k];

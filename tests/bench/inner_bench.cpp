@@ -67,7 +67,7 @@ TEST_CASE("hull and capsule tests", "[hull]") {
 TEST_CASE("complete search against a cached lookup", "[search]") {
     const Scene scene = makeBuiltin("cube:10");
     const std::vector<Ray> rays = randomRays(256, 3);
-    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid}) {
+    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
         auto search = makeCompleteSearch(accel, scene);
         BENCHMARK(std::string(toString(accel)) + " complete search x256") {
             Counters n;

@@ -1,0 +1,66 @@
+// No allocation per ray: a render allocates when it meets something new (a ray-tree path,
+// a blocker list, a band of breadth-first rays), never for the rays themselves.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+
+#include "render/render_session.h"
+#include "scene/builtin_scenes.h"
+
+// Count every operator new of this test binary. Sanitizer builds keep their own allocator.
+#if !defined(__SANITIZE_ADDRESS__)
+namespace {
+std::atomic<long> allocations{0};
+}
+void* operator new(std::size_t n) {
+    ++allocations;
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace rc;
+
+namespace {
+struct Measured {
+    long allocations;
+    std::uint64_t rays;
+};
+Measured render(const std::shared_ptr<const Scene>& scene, AccelKind accel, CacheKind cache, OrderKind order,
+                int size) {
+    RenderOptions o;
+    o.width = o.height = size;
+    o.accel = accel;
+    o.cache = cache;
+    o.order = order;
+    RenderSession s(scene, o);
+    const long before = allocations.load();
+    s.run();
+    return {allocations.load() - before, s.counters().totalRays()};
+}
+}  // namespace
+
+TEST_CASE("the ray loop does not allocate", "[alloc]") {
+    auto scene = std::make_shared<const Scene>(makeBuiltin("cube:5"));
+    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
+        for (CacheKind cache : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker}) {
+            for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) {
+                INFO(toString(accel) << " " << toString(cache) << " " << toString(order));
+                const Measured small = render(scene, accel, cache, order, 48);
+                const Measured large = render(scene, accel, cache, order, 96);
+                REQUIRE(large.rays > 3 * small.rays);
+                REQUIRE(large.allocations > 0);  // the counter counts: paths and children are new
+                // Allocations follow what is new (lists, bands), a small fraction of the rays
+                REQUIRE(large.allocations * 5 < long(large.rays));
+                // Scanline order without blocker lists: four times the rays, no more allocations
+                if (order == OrderKind::Scanline && cache != CacheKind::Blocker)
+                    REQUIRE(large.allocations == small.allocations);
+            }
+        }
+    }
+}
+#endif

@@ -1,0 +1,139 @@
+// The bounding volume hierarchy returns exactly what the linear scan returns, answers the
+// caches' culling queries as a scan over every object does, and caches sit in front of it.
+#include <catch2/catch.hpp>
+
+#include <memory>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/cone.h"
+#include "random_scenes.h"
+#include "render/render_session.h"
+#include "scene/builtin_scenes.h"
+#include "search/bounding_volume_hierarchy.h"
+
+using namespace rc;
+using rc::testing::Layout;
+
+namespace {
+// Every object within `limit` of a sphere's hull, as a cull finds them
+struct HullQuery final : SphereCull {
+    Sphere from, to;
+    std::vector<int> ids;
+    HullQuery(const Sphere& f, const Sphere& t) : from(f), to(t) {
+        a = f.c;
+        b = t.c;
+        radius = std::max(f.r, t.r);
+    }
+    double distance(const Sphere& s) override { return hullDistance(s.c, from, to) - s.r; }
+    void found(int id, double) override { ids.push_back(id); }
+};
+// The nearest object to a segment: the limit shrinks as objects are found
+struct NearestToSegment final : SphereCull {
+    int nearest = -1;
+    NearestToSegment(const Vec3& p, const Vec3& q) {
+        a = p;
+        b = q;
+        limit = kNoHit;
+    }
+    double distance(const Sphere& s) override {
+        const Vec3 ab = b - a;
+        const double t = glm::clamp(glm::dot(s.c - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+        return glm::length(s.c - (a + t * ab)) - s.r;
+    }
+    void found(int id, double d) override {
+        if (d < limit || (d == limit && id < nearest)) nearest = id;
+        limit = std::min(limit, d);
+    }
+};
+}  // namespace
+
+TEST_CASE("bvh and linear scan agree on random rays, ties included", "[bvh][exact]") {
+    for (Layout layout : {Layout::Overlapping, Layout::Tangent, Layout::Nested, Layout::Polygons}) {
+        const Scene scene = testing::randomScene(layout, 33, 80);
+        const LinearSearch linear(scene);
+        const BoundingVolumeHierarchy bvh(scene);
+        REQUIRE(bvh.nodeCount() >= 2 * 80 / 8 - 1);
+        std::mt19937_64 rng(9);
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        Counters a, b;
+        int hits = 0;
+        for (int i = 0; i < 20000; ++i) {
+            Vec3 o = Vec3(u(rng), u(rng), u(rng)) * 6.0;
+            Vec3 d = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+            if (i % 5 == 0) d = Vec3(0.0, 0.0, d.z > 0 ? 1.0 : -1.0);  // zero direction components
+            RayOrigin from;
+            if (i % 4 == 1) {  // leaving or entering an object's surface
+                const int k = int(rng() % std::uint64_t(scene.size()));
+                if (scene.objects[k].shape == Shape::Sphere) {
+                    const Sphere& s = scene.spheres[scene.objects[k].index];
+                    const Vec3 n = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+                    o = s.c + s.r * n;
+                    from = {k, glm::dot(d, n) < 0.0};
+                }
+            }
+            const double tmax = (i % 3 == 0) ? 4.0 * std::abs(u(rng)) : kNoHit;
+            const Query q{{o, d}, tmax, from, RayKind::Primary, -1};
+            INFO(scene.name << " ray " << i);
+            const Answer want = linear.nearest(q, a);
+            REQUIRE(bvh.nearest(q, b) == want);
+            hits += want.object >= 0;
+        }
+        REQUIRE(hits > 2000);
+        // the hierarchy tests far fewer objects
+        REQUIRE(b.intersectionTests * 4 < a.intersectionTests);
+    }
+}
+
+TEST_CASE("bvh culls exactly the objects a scan over all of them finds", "[bvh][cull]") {
+    const Scene scene = testing::randomScene(Layout::Overlapping, 7, 120);
+    const LinearSearch linear(scene);
+    const BoundingVolumeHierarchy bvh(scene);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-6.0, 6.0);
+    int nonEmpty = 0;
+    for (int i = 0; i < 300; ++i) {
+        const Sphere from{{u(rng), u(rng), u(rng)}, std::abs(u(rng)) / 6.0};
+        const Sphere to{{u(rng), u(rng), u(rng)}, std::abs(u(rng)) / 4.0};
+        HullQuery all(from, to), some(from, to);
+        linear.cull(all);
+        bvh.cull(some);
+        std::sort(some.ids.begin(), some.ids.end());
+        REQUIRE(some.ids == all.ids);
+        nonEmpty += !all.ids.empty();
+        NearestToSegment scan(from.c, to.c), tree(from.c, to.c);
+        linear.cull(scan);
+        bvh.cull(tree);
+        REQUIRE(tree.nearest == scan.nearest);
+        REQUIRE(tree.limit == scan.limit);
+    }
+    REQUIRE(nonEmpty > 100);
+}
+
+TEST_CASE("every cache in front of the bvh gives the linear image", "[bvh][exact][image]") {
+    const std::string balls2 = std::string(RAYCACHE_SCENES_DIR) + "/balls2.nff";
+    for (const std::string& spec : {std::string("cube:6"), std::string("glass"), balls2}) {
+        auto scene = std::make_shared<const Scene>(loadScene(spec));
+        RenderOptions o;
+        o.width = o.height = 40;
+        RenderSession reference(scene, o);
+        reference.run();
+        for (CacheKind c : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker}) {
+            for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) {
+                RenderOptions g = o;
+                g.accel = AccelKind::Bvh;
+                g.cache = c;
+                g.order = order;
+                g.verify = true;
+                RenderSession s(scene, g);
+                s.run();
+                INFO(spec << " " << toString(c) << " " << toString(order));
+                REQUIRE(s.counters().verifyDisagreements == 0);
+                REQUIRE(s.image().rgb8() == reference.image().rgb8());
+                // in front of a hierarchy, a ray costs a few tests, not one per object
+                REQUIRE(s.counters().intersectionTests < reference.counters().intersectionTests);
+            }
+        }
+    }
+}
