@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     for (rc::CacheKind cache : {rc::CacheKind::None, rc::CacheKind::Cylinder, rc::CacheKind::Blocker})
         for (rc::OrderKind order : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
-            for (rc::AccelKind accel : {rc::AccelKind::Linear, rc::AccelKind::Grid}) {
+            for (rc::AccelKind accel : {rc::AccelKind::Linear, rc::AccelKind::Grid, rc::AccelKind::Bvh}) {
                 rc::RenderOptions o;
                 o.width = 4;
                 o.height = 4;

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -93,4 +95,37 @@ TEST_CASE("scenes and info describe the built-ins", "[cli]") {
     REQUIRE(info.code == 0);
     REQUIRE(info.output.find("spheres    27") != std::string::npos);
     REQUIRE(info.output.find("shadow") != std::string::npos);
+}
+
+TEST_CASE("bench measures every search, cache and order side by side", "[cli][bench]") {
+    const fs::path csv = scratch("bench.csv");
+    const Result r = run("bench --scenes cube:4 --width 24 --repeat 1 --csv " + csv.string());
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    REQUIRE(line.rfind("scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray", 0) == 0);
+    // tests per ray of each configuration, by "accel/cache/order"
+    std::map<std::string, double> perRay;
+    std::map<std::string, double> rays;
+    while (std::getline(in, line)) {
+        std::vector<std::string> f;
+        std::stringstream fields(line);
+        for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+        REQUIRE(f.size() == 10);
+        perRay[f[1] + "/" + f[2] + "/" + f[3]] = std::stod(f[8]);
+        rays[f[1] + "/" + f[2] + "/" + f[3]] = std::stod(f[6]);
+    }
+    for (const char* accel : {"linear", "grid", "bvh"}) {
+        REQUIRE(perRay.count(std::string(accel) + "/none/scanline"));
+        for (const char* cache : {"cylinder", "blocker"})
+            for (const char* order : {"scanline", "bfs"})
+                REQUIRE(perRay.count(std::string(accel) + "/" + cache + "/" + order));
+    }
+    // Every configuration traces the same rays; a hierarchy tests fewer objects than the scan
+    for (const auto& [config, n] : rays)
+        if (config.rfind("embree", 0) != 0) REQUIRE(n == rays["linear/none/scanline"]);
+    REQUIRE(perRay["bvh/none/scanline"] < perRay["linear/none/scanline"] / 4);
+    REQUIRE(perRay["linear/blocker/bfs"] < perRay["linear/none/scanline"]);
 }

@@ -6,30 +6,39 @@
 
 namespace rc {
 
-double hullDistance(const Vec3& p, const Sphere& a, const Sphere& b) {
-    // [hull-distance]
+Hull::Hull(const Sphere& a, const Sphere& b) : a_(a), b_(b) {
+    // [hull-setup]
     const Vec3 axis = b.c - a.c;
-    const double D = glm::length(axis);
+    D_ = glm::length(axis);
     // One sphere inside the other: the hull is the larger sphere
-    if (D <= std::abs(a.r - b.r)) {
-        const Sphere& big = (a.r >= b.r) ? a : b;
-        return glm::length(p - big.c) - big.r;
+    nested_ = D_ <= std::abs(a.r - b.r);
+    if (nested_) {
+        if (b.r > a.r) a_ = b;
+        return;
     }
-    // Work in the half-plane through the axis: x along it, y away from it
-    const Vec3 u = axis / D;
-    const Vec3 ap = p - a.c;
-    const double x = glm::dot(ap, u);
-    const double y = glm::length(ap - x * u);
+    u_ = axis / D_;
     // The tangent line touches A at ra*n and B at (D,0) + rb*n, with n = (s, c)
-    const double s = (a.r - b.r) / D;
-    const double c = std::sqrt(std::max(0.0, 1.0 - s * s));
+    s_ = (a.r - b.r) / D_;
+    c_ = std::sqrt(std::max(0.0, 1.0 - s_ * s_));
+    // [hull-setup]
+}
+
+double Hull::distance(const Vec3& p) const {
+    // [hull-distance]
+    if (nested_) return glm::length(p - a_.c) - a_.r;
+    // Work in the half-plane through the axis: x along it, y away from it
+    const Vec3 ap = p - a_.c;
+    const double x = glm::dot(ap, u_);
+    const double y = glm::length(ap - x * u_);
     // Position along the tangent segment decides which piece of the boundary is nearest
-    const double along = (x - a.r * s) * c - (y - a.r * c) * s;
-    if (along < 0.0) return std::sqrt(x * x + y * y) - a.r;
-    if (along > D * c) return std::sqrt((x - D) * (x - D) + y * y) - b.r;
-    return x * s + y * c - a.r;
+    const double along = (x - a_.r * s_) * c_ - (y - a_.r * c_) * s_;
+    if (along < 0.0) return std::sqrt(x * x + y * y) - a_.r;
+    if (along > D_ * c_) return std::sqrt((x - D_) * (x - D_) + y * y) - b_.r;
+    return x * s_ + y * c_ - a_.r;
     // [hull-distance]
 }
+
+double hullDistance(const Vec3& p, const Sphere& a, const Sphere& b) { return Hull(a, b).distance(p); }
 
 bool meetsHull(const Sphere& s, const Sphere& a, const Sphere& b, double slack) {
     return hullDistance(s.c, a, b) <= s.r + slack;

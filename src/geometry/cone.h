@@ -10,6 +10,21 @@
 
 namespace rc {
 
+/// The hull of two spheres, with what its distance function needs worked out once: many
+/// spheres are measured against one hull when a blocker list is built.
+class Hull {
+public:
+    Hull(const Sphere& a, const Sphere& b);
+    /// Signed distance from `p`: exact outside the hull, negative inside it.
+    double distance(const Vec3& p) const;
+
+private:
+    Sphere a_, b_;
+    bool nested_;  ///< one sphere inside the other: the hull is the larger, a_
+    Vec3 u_{0.0};  ///< unit axis from a to b
+    double D_ = 0.0, s_ = 0.0, c_ = 0.0;
+};
+
 /// Signed distance from `p` to the hull of spheres `a` and `b`: exact outside the
 /// hull, negative inside it.
 double hullDistance(const Vec3& p, const Sphere& a, const Sphere& b);

@@ -40,6 +40,9 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
 
 Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
     if (e.object < 0) {
+        // From an object, the empty cone is narrow (its neighbours are near) and is rebuilt
+        // for about every other ray: in front of a cheap search it costs more than it saves
+        if (search_.cheap() && e.origin.object >= 0) return searchPast(q, &e, n);
         // Nothing was hit: the empty cone of directions around the last such ray, else the
         // cylinder, built the first time the entry is used again. Cones weigh every object;
         // in front of a grid the cylinder needs only nearby cells.
@@ -58,9 +61,11 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
     ++n.intersectionTests;
     const double t = scene_.intersect(q.ray, e.object, q.origin);
     if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
+    // A list longer than a complete search through a hierarchy: search instead
+    const BlockerList& list = lists_.get(lists_.originSite(q.origin), e.object, n);
+    if (list.bypass) return searchPast(q, &e, n);
     // Then only the potential blockers between origin and target can come first
     Answer best{e.object, t};
-    const BlockerList& list = lists_.get(lists_.originSite(q.origin), e.object, n);
     for (std::size_t i = 0; i < list.ids.size() && list.reach[i] <= best.t; ++i)
         testObject(scene_, q, list.ids[i], best, n);
     if (best.object != e.object) return {true, best, Decision::Miss, MissReason::BlockerHit};
@@ -73,6 +78,7 @@ Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why,
     // Every object that can stand between a surface and its light meets their hull
     Answer best;
     const BlockerList& list = lists_.get(lists_.originSite(q.origin), lists_.lightSite(q.light), n);
+    if (list.bypass) return searchPast(q, nullptr, n);
     for (std::size_t i = 0; i < list.ids.size() && list.reach[i] <= std::min(best.t, q.tmax); ++i)
         testObject(scene_, q, list.ids[i], best, n);
     if (why != MissReason::None) return {true, best, Decision::Miss, why};
@@ -80,6 +86,13 @@ Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why,
     return {true, best, Decision::Miss,
             best.object >= 0 ? MissReason::BlockerHit : MissReason::TargetMissed};
     // [blocker-shadow]
+}
+
+Lookup BlockerCache::searchPast(const Query& q, CacheEntry* e, Counters& n) {
+    ++n.completeSearches;
+    const Answer a = search_.nearest(q, n);
+    if (e) reload(q, a, *e, n);
+    return {true, a, Decision::Uncached, MissReason::None, true};
 }
 
 void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counters&) {

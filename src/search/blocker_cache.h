@@ -27,6 +27,9 @@ private:
     Lookup probe(const Query& q, CacheEntry& e, Counters& n);
     Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, Counters& n);
     void buildCone(CacheEntry& e, Counters& n) const;
+    /// A ray whose list is not worth testing (BlockerList::bypass): a complete search,
+    /// answered as uncached; the entry, if any, is loaded with what it found.
+    Lookup searchPast(const Query& q, CacheEntry* e, Counters& n);
     BlockerLists lists_;
 };
 

@@ -7,7 +7,7 @@
 /// whose bounding spheres meet that hull can block it. A list is built the first time a
 /// pair is met and kept: no O(n^3) precomputation.
 #include <cstdint>
-#include <unordered_map>
+#include <deque>
 #include <vector>
 
 #include "analysis/statistics.h"
@@ -22,7 +22,13 @@ namespace rc {
 struct BlockerList {
     std::vector<int> ids;
     std::vector<double> reach;  ///< |c_j - c_origin| - r_j - r_origin, ascending
+    /// Longer than a complete search through a grid or hierarchy: its pair is searched
+    /// instead (a huge polygon's bounding sphere meets nearly every hull it is part of).
+    bool bypass = false;
 };
+
+/// Lists longer than this are not worth testing in front of a cheap complete search.
+inline constexpr std::size_t kLongList = 32;
 
 /// Lists of potential blockers keyed by (origin site, target site). A site is an object
 /// id, the eye (`eyeSite()`), or a light (`lightSite(k)`), each a sphere: a point is a
@@ -47,6 +53,8 @@ public:
     /// The list if it was built, else nullptr.
     const std::vector<int>* find(int origin, int target) const;
     std::size_t size() const { return lists_.size(); }
+    /// Where a built list is kept, or nullptr. (A lookup per ray: an open-addressed table.)
+    const BlockerList* lookup(std::uint64_t key) const;
 
 private:
     std::uint64_t key(int origin, int target) const {
@@ -56,7 +64,11 @@ private:
     const CompleteSearch& search_;
     int sites_;
     double slack_;
-    std::unordered_map<std::uint64_t, BlockerList> lists_;
+    std::deque<BlockerList> lists_;  ///< built lists; a deque keeps references stable
+    /// Open addressing over keys: slot k holds key + 1 (0: empty) and its list's index
+    std::vector<std::uint64_t> slotKeys_;
+    std::vector<std::uint32_t> slotLists_;
+    std::size_t slot(std::uint64_t key) const;
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
 };
 

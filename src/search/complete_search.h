@@ -49,6 +49,9 @@ public:
     /// segment is enough to build them (infinite: no cap). Where it is finite, cull() cannot
     /// find the objects near a direction cheaply, so the caches build no empty cones.
     virtual double nearRadius() const { return kNoHit; }
+    /// Does a search cost a few tests rather than one per object (a grid, a hierarchy)?
+    /// Then a long blocker list costs more than the search it would save.
+    virtual bool cheap() const { return true; }
 
 protected:
     explicit CompleteSearch(const Scene& scene) : scene_(scene) {}
@@ -64,6 +67,7 @@ public:
     explicit LinearSearch(const Scene& scene);
     Answer nearest(const Query& q, Counters& n) const override;
     std::string name() const override { return "linear"; }
+    bool cheap() const override { return false; }
 
 private:
     SphereBatch all_;  ///< every object, in id order
