@@ -13,9 +13,12 @@ bool BreadthFirstOrder::beginPath() {
     if (pathIndex_ < generation_.size()) ++pathIndex_;
     if (pathIndex_ >= generation_.size()) {
         // The next generation of the ray tree; when none is left, the next band
-        generation_.assign(std::make_move_iterator(nextGeneration_.begin()),
-                           std::make_move_iterator(nextGeneration_.end()));
-        nextGeneration_.clear();
+        generation_.clear();
+        for (int node = 0; node < int(nextGeneration_.size()); ++node) {
+            if (nextGeneration_[node].empty()) continue;
+            generation_.emplace_back(node, std::move(nextGeneration_[node]));
+            nextGeneration_[node].clear();
+        }
         pathIndex_ = 0;
         if (generation_.empty()) {
             if (nextRow_ >= height_) return false;
@@ -98,7 +101,10 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
 }
 
 void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTask>& children) {
-    for (RayTask& c : children) nextGeneration_[c.node].push_back(std::move(c));
+    for (RayTask& c : children) {
+        if (c.node >= int(nextGeneration_.size())) nextGeneration_.resize(std::size_t(c.node) + 1);
+        nextGeneration_[c.node].push_back(std::move(c));
+    }
     state_[inflight_] = Done;
     // [bfs-extend]
     // A seed, or a ray the cache answered with the region's object, extends the region

@@ -3,7 +3,6 @@
 /// \brief Breadth-first order: a seed fill (Smith's tint fill) over each ray-tree path.
 #include <cstdint>
 #include <deque>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -48,7 +47,7 @@ private:
     std::vector<std::pair<int, std::vector<RayTask>>> generation_;
     std::size_t pathIndex_ = 0;
     bool pathActive_ = false;
-    std::map<int, std::vector<RayTask>> nextGeneration_;
+    std::vector<std::vector<RayTask>> nextGeneration_;  ///< by path (cache tree node)
     // Fill state of the active path, over the pixels of the band
     std::vector<int> slot_;
     std::vector<State> state_;

@@ -40,9 +40,11 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
 
 Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
     if (e.object < 0) {
-        // From an object, the empty cone is narrow (its neighbours are near) and is rebuilt
-        // for about every other ray: in front of a cheap search it costs more than it saves
-        if (search_.cheap() && e.origin.object >= 0) return searchPast(q, &e, n);
+        // In front of a cheap search only the eye's empty cone pays: from an object the cone
+        // is narrow (its neighbours are near) and rebuilt for about every other ray, and a
+        // grid, which cannot cull by direction, would need a cylinder walked cell by cell
+        const bool cone = e.origin.object < 0 && search_.nearRadius() == kNoHit;
+        if (search_.cheap() && !cone) return searchPast(q, &e, n);
         // Nothing was hit: the empty cone of directions around the last such ray, else the
         // cylinder, built the first time the entry is used again. Cones weigh every object;
         // in front of a grid the cylinder needs only nearby cells.

@@ -62,19 +62,17 @@ BoundingVolumeHierarchy::BoundingVolumeHierarchy(const Scene& scene) : CompleteS
     }
     std::vector<int> ids(std::size_t(scene.size()));
     for (int id = 0; id < scene.size(); ++id) ids[id] = id;
-    nodes_.reserve(2 * ids.size());
-    build(ids, 0, int(ids.size()), boxes, 1);
+    Sphere rootBound;
+    root_ = build(ids, 0, int(ids.size()), boxes, 1, rootBox_, rootBound);
     order_ = ids;
     for (int id : order_) leaf_.add(scene, id);
 }
 
-int BoundingVolumeHierarchy::build(std::vector<int>& ids, int begin, int end, const std::vector<double>& boxes,
-                                   int depth) {
+BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& ids, int begin, int end,
+                                                            const std::vector<double>& boxes, int depth, Box& node,
+                                                            Sphere& bound) {
     depth_ = std::max(depth_, depth);
-    const int index = int(nodes_.size());
-    nodes_.push_back({});
     // The node's box, its centroids' box, and a sphere around its objects' spheres
-    Node node;
     double clo[3], chi[3];
     for (int k = 0; k < 3; ++k) {
         node.lo[k] = clo[k] = kNoHit;
@@ -92,7 +90,7 @@ int BoundingVolumeHierarchy::build(std::vector<int>& ids, int begin, int end, co
         slo = glm::min(slo, s.c - Vec3(s.r));
         shi = glm::max(shi, s.c + Vec3(s.r));
     }
-    Sphere bound{0.5 * (slo + shi), 0.0};
+    bound = {0.5 * (slo + shi), 0.0};
     for (int i = begin; i < end; ++i) {
         const Sphere& s = scene_.objects[ids[i]].bound;
         bound.r = std::max(bound.r, glm::length(s.c - bound.c) + s.r);
@@ -146,31 +144,34 @@ int BoundingVolumeHierarchy::build(std::vector<int>& ids, int begin, int end, co
     }
     // [bvh-split]
     if (split < 0) {
-        node.first = begin;
-        node.count = count;
-    } else {
-        build(ids, begin, split, boxes, depth + 1);
-        node.first = build(ids, split, end, boxes, depth + 1);
+        leaves_.push_back({begin, count});
+        leafBounds_.push_back(bound);
+        return ~Ref(leaves_.size() - 1);
     }
-    nodes_[index] = node;
-    if (bounds_.size() <= std::size_t(index)) bounds_.resize(std::size_t(index) + 1);
-    bounds_[index] = bound;
+    const Ref index = Ref(nodes_.size());
+    nodes_.emplace_back();
+    nodeBounds_.push_back(bound);
+    Node inner;
+    Sphere unused;
+    inner.child[0] = build(ids, begin, split, boxes, depth + 1, inner.box[0], unused);
+    inner.child[1] = build(ids, split, end, boxes, depth + 1, inner.box[1], unused);
+    nodes_[index] = inner;
     return index;
 }
 
 Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
     Answer best;
-    if (nodes_.empty()) return best;
+    if (order_.empty()) return best;
     const Vec3& o = q.ray.o;
     const double inv[3] = {1.0 / q.ray.d.x, 1.0 / q.ray.d.y, 1.0 / q.ray.d.z};
     // [bvh-traverse]
     // Open the boxes the ray enters before the nearest hit so far, nearer child first
-    int stack[kMaxDepth + 2];
+    Ref stack[kMaxDepth + 2];
     double enters[kMaxDepth + 2];
     int top = 0;
-    const double t = entry(nodes_[0].lo, nodes_[0].hi, o, inv, q.tmax);
+    const double t = entry(rootBox_.lo, rootBox_.hi, o, inv, q.tmax);
     if (t < 0.0) return best;
-    stack[top] = 0;
+    stack[top] = root_;
     enters[top++] = t;
     while (top > 0) {
         // A box entered beyond the nearest hit cannot hold a nearer one (nor an equal one:
@@ -178,25 +179,23 @@ Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
         --top;
         const double limit = std::min(best.t, q.tmax);
         if (enters[top] > limit) continue;  // the nearest hit moved in front of it
-        const int index = stack[top];
-        const Node& node = nodes_[index];
-        if (node.count > 0) {
-            leaf_.test(scene_, q, std::size_t(node.first), std::size_t(node.first + node.count), best, n);
+        if (stack[top] < 0) {
+            const Leaf& leaf = leaves_[~stack[top]];
+            leaf_.test(scene_, q, std::size_t(leaf.first), std::size_t(leaf.first + leaf.count), best, n);
             continue;
         }
-        const int left = index + 1, right = node.first;
-        const double tl = entry(nodes_[left].lo, nodes_[left].hi, o, inv, limit);
-        const double tr = entry(nodes_[right].lo, nodes_[right].hi, o, inv, limit);
+        const Node& node = nodes_[stack[top]];
+        const double tl = entry(node.box[0].lo, node.box[0].hi, o, inv, limit);
+        const double tr = entry(node.box[1].lo, node.box[1].hi, o, inv, limit);
         // Push the farther child first, so the nearer is opened next
-        const bool leftFirst = tl <= tr;
-        const int far = leftFirst ? right : left, near = leftFirst ? left : right;
-        const double tFar = leftFirst ? tr : tl, tNear = leftFirst ? tl : tr;
+        const int nearer = tl <= tr ? 0 : 1;
+        const double tNear = nearer == 0 ? tl : tr, tFar = nearer == 0 ? tr : tl;
         if (tFar >= 0.0) {
-            stack[top] = far;
+            stack[top] = node.child[1 - nearer];
             enters[top++] = tFar;
         }
         if (tNear >= 0.0) {
-            stack[top] = near;
+            stack[top] = node.child[nearer];
             enters[top++] = tNear;
         }
     }
@@ -205,32 +204,32 @@ Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
 }
 
 void BoundingVolumeHierarchy::cull(SphereCull& c) const {
-    if (nodes_.empty()) return;
+    if (order_.empty()) return;
     // [bvh-cull]
     // Open the bounding spheres within the limit, nearest first; the limit may shrink
-    int stack[kMaxDepth + 2];
+    Ref stack[kMaxDepth + 2];
     double distances[kMaxDepth + 2];
     int top = 0;
-    stack[top] = 0;
-    distances[top++] = c.distance(bounds_[0]);
+    stack[top] = root_;
+    distances[top++] = c.distance(bound(root_));
     while (top > 0) {
         --top;
         if (distances[top] > c.limit) continue;
-        const Node& node = nodes_[stack[top]];
-        if (node.count > 0) {
-            for (int i = node.first; i < node.first + node.count; ++i) {
+        if (stack[top] < 0) {
+            const Leaf& leaf = leaves_[~stack[top]];
+            for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
                 const double d = c.distance(scene_.objects[order_[i]].bound);
                 if (d <= c.limit) c.found(order_[i], d);
             }
             continue;
         }
-        const int left = stack[top] + 1, right = node.first;
-        const double dl = c.distance(bounds_[left]), dr = c.distance(bounds_[right]);
-        const bool leftFirst = dl <= dr;
-        stack[top] = leftFirst ? right : left;
-        distances[top++] = leftFirst ? dr : dl;
-        stack[top] = leftFirst ? left : right;
-        distances[top++] = leftFirst ? dl : dr;
+        const Node& node = nodes_[stack[top]];
+        const double dl = c.distance(bound(node.child[0])), dr = c.distance(bound(node.child[1]));
+        const int nearer = dl <= dr ? 0 : 1;
+        stack[top] = node.child[1 - nearer];
+        distances[top++] = nearer == 0 ? dr : dl;
+        stack[top] = node.child[nearer];
+        distances[top++] = nearer == 0 ? dl : dr;
     }
     // [bvh-cull]
 }

@@ -22,21 +22,35 @@ public:
     std::string name() const override { return "bvh"; }
     /// Descends only into nodes whose bounding sphere meets `c`.
     void cull(SphereCull& c) const override;
-    int nodeCount() const { return int(nodes_.size()); }
+    /// Inner nodes and leaves.
+    int nodeCount() const { return int(nodes_.size() + leaves_.size()); }
     /// The deepest leaf (the root is depth 1).
     int depth() const;
 
 private:
-    /// A node: `count` > 0 is a leaf of objects order_[first, first + count); otherwise
-    /// its children are the next node and node `first`.
-    struct Node {
+    /// A child: an inner node (>= 0) or a leaf (~index into leaves_, < 0).
+    using Ref = int;
+    struct Box {
         double lo[3], hi[3];
-        int first = 0;
-        int count = 0;
     };
-    int build(std::vector<int>& ids, int begin, int end, const std::vector<double>& boxes, int depth);
+    /// An inner node keeps both children's boxes, so one visit tests both from one place.
+    struct Node {
+        Box box[2];
+        Ref child[2];
+    };
+    /// A leaf: objects order_[first, first + count).
+    struct Leaf {
+        int first, count;
+    };
+    Ref build(std::vector<int>& ids, int begin, int end, const std::vector<double>& boxes, int depth, Box& box,
+              Sphere& bound);
+    const Sphere& bound(Ref r) const { return r >= 0 ? nodeBounds_[r] : leafBounds_[~r]; }
     std::vector<Node> nodes_;
-    std::vector<Sphere> bounds_;  ///< per node: a sphere holding its objects' bounding spheres
+    std::vector<Leaf> leaves_;
+    /// Per node and per leaf: a sphere holding its objects' bounding spheres
+    std::vector<Sphere> nodeBounds_, leafBounds_;
+    Ref root_ = 0;
+    Box rootBox_{};
     std::vector<int> order_;      ///< object ids in leaf order
     SphereBatch leaf_;            ///< the same objects, stored for the ray loop
     double pad_ = 0.0;
