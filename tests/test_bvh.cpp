@@ -137,3 +137,24 @@ TEST_CASE("every cache in front of the bvh gives the linear image", "[bvh][exact
         }
     }
 }
+
+TEST_CASE("in front of a hierarchy the blocker cache searches past long lists", "[bvh][bypass]") {
+    // balls2: the ground polygon's bounding sphere meets every hull it is part of
+    auto scene = std::make_shared<const Scene>(loadScene(std::string(RAYCACHE_SCENES_DIR) + "/balls2.nff"));
+    auto tests = [&](AccelKind accel, CacheKind cache) {
+        RenderOptions o;
+        o.width = o.height = 48;
+        o.accel = accel;
+        o.cache = cache;
+        RenderSession s(scene, o);
+        s.run();
+        return double(s.counters().intersectionTests) / double(s.counters().totalRays());
+    };
+    const double searched = tests(AccelKind::Bvh, CacheKind::None);
+    const double cached = tests(AccelKind::Bvh, CacheKind::Blocker);
+    const double listed = tests(AccelKind::Linear, CacheKind::Blocker);
+    INFO("tests per ray: bvh " << searched << ", bvh + blocker " << cached << ", linear + blocker " << listed);
+    REQUIRE(cached < 3.0 * searched);
+    // behind a linear scan the same lists are worth testing, and are tested
+    REQUIRE(listed > 10.0 * cached);
+}

@@ -51,8 +51,9 @@ struct Scene {
         materials.push_back(m);
         return int(materials.size()) - 1;
     }
-    /// Adds a sphere with a material index; returns its object id.
-    int addSphere(Sphere s, int material);  // by value: s may be an element of `spheres`
+    /// Adds a sphere with a material index; returns its object id. Takes `s` by value: it
+    /// may be an element of `spheres` itself, which the push may move.
+    int addSphere(Sphere s, int material);
     /// Adds a polygon (made with makePolygon) with a material; returns its object id.
     int addPolygon(Polygon p, int material);
     /// Computes `bound`. Call once after the last add.
