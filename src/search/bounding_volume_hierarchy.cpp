@@ -62,15 +62,13 @@ BoundingVolumeHierarchy::BoundingVolumeHierarchy(const Scene& scene) : CompleteS
     }
     std::vector<int> ids(std::size_t(scene.size()));
     for (int id = 0; id < scene.size(); ++id) ids[id] = id;
-    Sphere rootBound;
-    root_ = build(ids, 0, int(ids.size()), boxes, 1, rootBox_, rootBound);
+    root_ = build(ids, 0, int(ids.size()), boxes, 1, rootBox_);
     order_ = ids;
     for (int id : order_) leaf_.add(scene, id);
 }
 
 BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& ids, int begin, int end,
-                                                            const std::vector<double>& boxes, int depth, Box& node,
-                                                            Sphere& bound) {
+                                                            const std::vector<double>& boxes, int depth, Box& node) {
     depth_ = std::max(depth_, depth);
     // The node's box, its centroids' box, and a sphere around its objects' spheres
     double clo[3], chi[3];
@@ -90,7 +88,7 @@ BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& id
         slo = glm::min(slo, s.c - Vec3(s.r));
         shi = glm::max(shi, s.c + Vec3(s.r));
     }
-    bound = {0.5 * (slo + shi), 0.0};
+    Sphere bound{0.5 * (slo + shi), 0.0};
     for (int i = begin; i < end; ++i) {
         const Sphere& s = scene_.objects[ids[i]].bound;
         bound.r = std::max(bound.r, glm::length(s.c - bound.c) + s.r);
@@ -152,9 +150,8 @@ BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& id
     nodes_.emplace_back();
     nodeBounds_.push_back(bound);
     Node inner;
-    Sphere unused;
-    inner.child[0] = build(ids, begin, split, boxes, depth + 1, inner.box[0], unused);
-    inner.child[1] = build(ids, split, end, boxes, depth + 1, inner.box[1], unused);
+    inner.child[0] = build(ids, begin, split, boxes, depth + 1, inner.box[0]);
+    inner.child[1] = build(ids, split, end, boxes, depth + 1, inner.box[1]);
     nodes_[index] = inner;
     return index;
 }

@@ -42,8 +42,8 @@ private:
     struct Leaf {
         int first, count;
     };
-    Ref build(std::vector<int>& ids, int begin, int end, const std::vector<double>& boxes, int depth, Box& box,
-              Sphere& bound);
+    /// Builds the subtree of ids[begin, end) and sets `box` to its box; returns its ref.
+    Ref build(std::vector<int>& ids, int begin, int end, const std::vector<double>& boxes, int depth, Box& box);
     const Sphere& bound(Ref r) const { return r >= 0 ? nodeBounds_[r] : leafBounds_[~r]; }
     std::vector<Node> nodes_;
     std::vector<Leaf> leaves_;
