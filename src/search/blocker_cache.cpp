@@ -45,11 +45,10 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
         // grid, which cannot cull by direction, would need a cylinder walked cell by cell
         const bool cone = e.origin.object < 0 && search_.nearRadius() == kNoHit;
         if (search_.cheap() && !cone) return searchPast(q, &e, n);
-        // Nothing was hit: the empty cone of directions around the last such ray, else the
-        // cylinder, built the first time the entry is used again. Cones weigh every object;
-        // in front of a grid the cylinder needs only nearby cells.
+        // Nothing was hit: the empty cone of directions around the last such ray, else (when
+        // an object touches the origin) the cylinder, built the first time the entry is used again
         if (e.pending) {
-            if (search_.nearRadius() == kNoHit) buildCone(e, n);
+            buildCone(e, n);
             if (e.coneAngle < 0.0) buildCylinder(e, n);
             e.pending = false;
         }

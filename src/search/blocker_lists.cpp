@@ -12,22 +12,25 @@ namespace rc {
 namespace {
 /// The objects that meet the hull of two spheres (a point is a sphere of radius 0).
 struct HullCull final : SphereCull {
-    HullCull(const Sphere& from, const Sphere& to, double slack, Counters& n, std::vector<std::pair<double, int>>& out)
-        : hull(from, to), n(n), out(out) {
+    HullCull(const Sphere& from, const Sphere& to, int target, double slack, Counters& n,
+             std::vector<std::pair<double, int>>& out)
+        : hull(from, to), target(target), n(n), out(out) {
         // The hull lies within the larger radius of the segment between the centres
         a = from.c;
         b = to.c;
         radius = std::max(from.r, to.r) + slack;
         limit = slack;
-        out.clear();
     }
     // The hull's distance function is 1-Lipschitz: a lower bound for any sphere inside s
     double distance(const Sphere& s) override {
         ++n.hullTests;
         return hull.distance(s.c) - s.r;
     }
-    void found(int id, double) override { out.emplace_back(0.0, id); }
+    void found(int id, double) override {
+        if (id != target) out.emplace_back(0.0, id);  // its reach is set once the list is known
+    }
     Hull hull;
+    int target;
     Counters& n;
     std::vector<std::pair<double, int>>& out;
 };
@@ -88,13 +91,13 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     // Every object whose bounding sphere meets the hull of origin and target may block
     const Sphere a = siteSphere(origin);
     const Sphere b = siteSphere(target);
-    HullCull hull(a, b, slack_, n, found_);
+    found_.clear();
+    HullCull hull(a, b, target, slack_, n, found_);
     search_.cull(hull);
     for (auto& [reach, id] : found_) {
         const Sphere& s = scene_.objects[id].bound;
         reach = glm::length(s.c - a.c) - s.r - a.r - slack_;
     }
-    std::erase_if(found_, [&](const auto& f) { return f.second == target; });
     // [build-blocker-list]
     // Nearest first, so a lookup can stop early
     std::sort(found_.begin(), found_.end());

@@ -53,8 +53,6 @@ public:
     /// The list if it was built, else nullptr.
     const std::vector<int>* find(int origin, int target) const;
     std::size_t size() const { return lists_.size(); }
-    /// Where a built list is kept, or nullptr. (A lookup per ray: an open-addressed table.)
-    const BlockerList* lookup(std::uint64_t key) const;
 
 private:
     std::uint64_t key(int origin, int target) const {
@@ -69,6 +67,8 @@ private:
     std::vector<std::uint64_t> slotKeys_;
     std::vector<std::uint32_t> slotLists_;
     std::size_t slot(std::uint64_t key) const;
+    /// Where a built list is kept, or nullptr. (A lookup per ray: an open-addressed table.)
+    const BlockerList* lookup(std::uint64_t key) const;
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
 };
 

@@ -3,15 +3,8 @@
 
 namespace rc {
 
-void CompleteSearch::objectsNearSegment(const Vec3&, const Vec3&, double, std::vector<int>& out) const {
-    out.resize(std::size_t(scene_.size()));
-    for (int id = 0; id < scene_.size(); ++id) out[id] = id;
-}
-
 void CompleteSearch::cull(SphereCull& c) const {
-    std::vector<int>& candidates = candidates_;
-    objectsNearSegment(c.a, c.b, c.radius, candidates);
-    for (int id : candidates) {
+    for (int id = 0; id < scene_.size(); ++id) {
         const double d = c.distance(scene_.objects[id].bound);
         if (d <= c.limit) c.found(id, d);
     }

@@ -40,14 +40,12 @@ public:
     virtual Answer nearest(const Query& q, Counters& n) const = 0;
     virtual std::string name() const = 0;
     /// Calls `c.found` for every object whose bounding sphere meets `c`. By default, measures
-    /// the objects objectsNearSegment() returns for the hint (all of them for a linear scan).
+    /// every object.
     virtual void cull(SphereCull& c) const;
-    /// Objects whose bounding spheres may come within `radius` of the segment a-b (every
-    /// object may be returned, and is by default).
-    virtual void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const;
-    /// Cylinders of safety are capped at this radius, so that objectsNearSegment() of the
-    /// segment is enough to build them (infinite: no cap). Where it is finite, cull() cannot
-    /// find the objects near a direction cheaply, so the caches build no empty cones.
+    /// Cylinders of safety are capped at this radius, so that the objects near the segment
+    /// (the cull's hint) are enough to build them (infinite: no cap). Where it is finite,
+    /// cull() cannot find the objects near a direction cheaply, so the caches build no
+    /// empty cones.
     virtual double nearRadius() const { return kNoHit; }
     /// Does a search cost a few tests rather than one per object (a grid, a hierarchy)?
     /// Then a long blocker list costs more than the search it would save.
@@ -56,9 +54,6 @@ public:
 protected:
     explicit CompleteSearch(const Scene& scene) : scene_(scene) {}
     const Scene& scene_;
-
-private:
-    mutable std::vector<int> candidates_;  ///< scratch of the default cull()
 };
 
 /// Tests every object in the scene: the paper's "standard ray-tracing algorithm".

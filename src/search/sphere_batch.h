@@ -19,7 +19,6 @@ public:
     /// Appends object `id` of `scene`.
     void add(const Scene& scene, int id);
     std::size_t size() const { return ids_.size(); }
-    int id(std::size_t i) const { return ids_[i]; }
 
     /// Tests objects [begin, end) against `q`, keeping the nearest in `best`.
     void test(const Scene& scene, const Query& q, std::size_t begin, std::size_t end, Answer& best,

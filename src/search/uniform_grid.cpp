@@ -174,6 +174,14 @@ Answer UniformGrid::nearest(const Query& q, Counters& n) const {
     return best;
 }
 
+void UniformGrid::cull(SphereCull& c) const {
+    objectsNearSegment(c.a, c.b, c.radius, candidates_);
+    for (int id : candidates_) {
+        const double d = c.distance(scene_.objects[id].bound);
+        if (d <= c.limit) c.found(id, d);
+    }
+}
+
 void UniformGrid::objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const {
     out.clear();
     if (ids_.empty()) return;

@@ -25,7 +25,9 @@ public:
     std::vector<int> objectsInBox(const Vec3& lo, const Vec3& hi) const;
     /// Objects whose bounding boxes come within `radius` of the segment a-b, and maybe a
     /// few more: the cells within ceil(radius / smallest side) cells of those it crosses.
-    void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const override;
+    void objectsNearSegment(const Vec3& a, const Vec3& b, double radius, std::vector<int>& out) const;
+    /// Measures the objects near the cull's hint segment only.
+    void cull(SphereCull& c) const override;
     /// The smallest side of a cell.
     double nearRadius() const override { return std::min(cellSize_.x, std::min(cellSize_.y, cellSize_.z)); }
 
@@ -43,6 +45,7 @@ private:
     std::vector<int> ids_;
     mutable std::vector<std::uint32_t> mailbox_;  ///< last query that tested each object
     mutable std::uint32_t stamp_ = 0;
+    mutable std::vector<int> candidates_;  ///< scratch of cull()
 };
 
 }  // namespace rc
