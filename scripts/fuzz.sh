@@ -5,7 +5,7 @@
 #   seconds   the whole run's budget, split evenly over the targets (default 600)
 #   target    fuzz_nff and/or fuzz_render (default: both)
 # The seed corpus is copied at run time from tests/data (every .nff) and the SPD scenes
-# (RAYCACHE_SCENES_DIR, default ../shared/scenes); what the fuzzer learns is kept in
+# (RAYCACHE_SCENES_DIR, default scenes); what the fuzzer learns is kept in
 # build-fuzz/corpus/<target>. A finding stops the run with a non-zero exit and leaves
 # the input in build-fuzz/artifacts/: reproduce it with `build-fuzz/fuzz/<target> FILE`,
 # then add it to tests/data/regressions/ (see tests/test_robustness.cpp).
@@ -15,7 +15,7 @@ seconds=${1:-600}
 if (($# > 0)); then shift; fi
 targets=("$@")
 if ((${#targets[@]} == 0)); then targets=(fuzz_nff fuzz_render); fi
-scenes=${RAYCACHE_SCENES_DIR:-../shared/scenes}
+scenes=${RAYCACHE_SCENES_DIR:-scenes}
 jobs=${RAYCACHE_JOBS:-$(nproc)}
 
 cmake --preset fuzz >/dev/null

@@ -15,7 +15,7 @@ namespace rc::cli {
 
 namespace {
 struct BenchArgs {
-    std::vector<std::string> scenes{"cube:5", "cube:10", "cube:20", "../shared/scenes/balls2.nff"};
+    std::vector<std::string> scenes{"cube:5", "cube:10", "cube:20", "scenes/balls2.nff"};
     int repeat = 3;
     int threads = 1;
     int linearLimit = 1000;

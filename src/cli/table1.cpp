@@ -112,7 +112,7 @@ void addTable1Command(CLI::App& app, Commands& out) {
         ->check(CLI::Range(1, 64))->capture_default_str();
     c->add_option("--repeat", a->repeat, "repeats; times are medians")->check(CLI::Range(1, 100))
         ->capture_default_str();
-    c->add_option("--scenes", a->scenes, "other scenes instead of cube:N (e.g. ../shared/scenes/balls2.nff)")
+    c->add_option("--scenes", a->scenes, "other scenes instead of cube:N (e.g. scenes/balls2.nff)")
         ->delimiter(',');
     c->add_option("--csv", a->csv, "also write the table as CSV")->check(outputFile());
     a->flags.addTo(c, false);
