@@ -1,3 +1,21 @@
-// Catch2's main for every tutorial check, compiled once (it takes a while).
-#define CATCH_CONFIG_MAIN
+// Catch2's main for every tutorial check, compiled once (it takes a while). After the
+// checks it says in one line whether the exercise is solved, and where to look if not.
+#define CATCH_CONFIG_RUNNER
+#include <cstdio>
+
 #include <catch2/catch.hpp>
+
+int main(int argc, char* argv[]) {
+    const int failed = Catch::Session().run(argc, argv);
+    if (failed == 0) {
+        std::printf("\nSOLVED: every check passes.\n");
+    } else {
+        std::printf(
+            "\nNOT YET: %d check(s) failed. Read the first failure above: its test case names the\n"
+            "rule your code breaks, and the lines after \"with messages:\" give the case, the\n"
+            "expected value and yours. The tutorial's page has hints, from a nudge to a\n"
+            "near-solution.\n",
+            failed);
+    }
+    return failed;
+}

@@ -1,11 +1,16 @@
-// Tutorial 02's check: tutorial::segmentDistance against rc::segmentDistance, and the
-// capsule test and safety radius built on it against rc::SafetyCylinder.
+// Tutorial 02's check: tutorial::segmentDistance against rc::segmentDistance,
+// tutorial::insideCapsule against rc::SafetyCylinder::contains, and tutorial::safetyRadius
+// against the gap to the nearest other sphere, on random cases and on cube:4's eye rays.
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include <catch2/catch.hpp>
 
 #include "exercise.h"
+#include "geometry/intersection.h"
 #include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
 #include "search/complete_search.h"
@@ -29,11 +34,12 @@ TEST_CASE("segmentDistance agrees with the library's on random points and segmen
     }
 }
 
-TEST_CASE("a capsule built on segmentDistance holds what rc::SafetyCylinder holds", "[tutorial02]") {
+TEST_CASE("insideCapsule holds what rc::SafetyCylinder holds", "[tutorial02]") {
     tutorial::Random rnd(85);
-    int inside = 0, tested = 0;
+    int inside = 0, tested = 0, oneEndOnly = 0;
     for (int i = 0; i < 20000; ++i) {
         rc::SafetyCylinder cyl{rnd.inBox(5.0), rnd.inBox(5.0), rnd.uniform(0.1, 3.0)};
+        if (i % 10 == 0) cyl.b = cyl.a;  // a capsule around a point is a sphere
         // Points around the segment, about half of them inside the capsule
         auto near = [&] {
             return cyl.a + rnd.uniform(-0.3, 1.3) * (cyl.b - cyl.a) +
@@ -44,37 +50,84 @@ TEST_CASE("a capsule built on segmentDistance holds what rc::SafetyCylinder hold
         const double dp = rc::segmentDistance(p, cyl.a, cyl.b) - cyl.radius;
         const double dq = rc::segmentDistance(q, cyl.a, cyl.b) - cyl.radius;
         if (std::abs(dp) < 1e-6 || std::abs(dq) < 1e-6) continue;
-        const bool mine = tutorial::segmentDistance(p, cyl.a, cyl.b) <= cyl.radius &&
-                          tutorial::segmentDistance(q, cyl.a, cyl.b) <= cyl.radius;
-        INFO("case " << i);
-        REQUIRE(mine == cyl.contains(p, q));
-        inside += mine;
+        const bool want = cyl.contains(p, q);
+        INFO("case " << i << ": capsule radius " << cyl.radius << " around a segment of length "
+                     << glm::length(cyl.b - cyl.a) << "; p is " << (dp <= 0 ? "inside" : "outside")
+                     << ", q is " << (dq <= 0 ? "inside" : "outside") << "; expected "
+                     << (want ? "inside" : "not inside"));
+        REQUIRE(tutorial::insideCapsule(p, q, cyl.a, cyl.b, cyl.radius) == want);
+        inside += want;
+        oneEndOnly += (dp <= 0) != (dq <= 0);
         ++tested;
     }
+    // The cases test both answers, and segments with one end in and one out
     CHECK(inside > tested / 10);
     CHECK(inside < tested - tested / 10);
+    CHECK(oneEndOnly > tested / 10);
 }
 
-TEST_CASE("the safety radius of cube:4's eye rays", "[tutorial02]") {
-    // R = min over the other spheres j of (distance from c_j to the segment) - r_j
+namespace {
+// The gap from the segment a-b to the nearest sphere but `hit`, computed here with the
+// library's distance
+double gap(const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a, const rc::Vec3& b) {
+    double r = rc::kNoHit;
+    for (int j = 0; j < int(spheres.size()); ++j)
+        if (j != hit) r = std::min(r, rc::segmentDistance(spheres[j].c, a, b) - spheres[j].r);
+    return r;
+}
+}  // namespace
+
+TEST_CASE("safetyRadius is the gap to the nearest other sphere", "[tutorial02]") {
+    tutorial::Random rnd(1985);
+    for (int i = 0; i < 2000; ++i) {
+        std::vector<rc::Sphere> spheres(1 + rnd.index(12));
+        for (rc::Sphere& s : spheres) s = {rnd.inBox(6.0), rnd.uniform(0.1, 1.5)};
+        const int hit = rnd.index(int(spheres.size()));
+        const rc::Vec3 a = rnd.inBox(6.0), b = i % 7 == 0 ? a : rnd.inBox(6.0);
+        const double want = gap(spheres, hit, a, b), got = tutorial::safetyRadius(spheres, hit, a, b);
+        INFO("case " << i << ": " << spheres.size() << " spheres, the ray hit sphere " << hit << "; expected radius "
+                     << want << ", yours " << got
+                     << (spheres.size() == 1 ? " (no other sphere: nothing limits the capsule)" : ""));
+        if (std::isinf(want))
+            REQUIRE(got == want);
+        else
+            REQUIRE(std::abs(got - want) <= closeEnough(6.0));
+    }
+}
+
+TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02]") {
     const rc::Scene s = rc::makeBuiltin("cube:4");
+    std::vector<rc::Sphere> spheres;
+    for (const rc::Object& o : s.objects) spheres.push_back(o.bound);
     const rc::LinearSearch search(s);
-    const rc::RayGenerator camera(s.camera, 32, 32);
-    for (int p = 0; p < 32 * 32; ++p) {
+    const int n = 32;
+    const rc::RayGenerator camera(s.camera, n, n);
+    int hits = 0, tested = 0;
+    for (int p = 0; p + 1 < n * n; ++p) {
         rc::Query q;
-        q.ray = camera.primary(p % 32, p / 32);
-        rc::Counters n;
-        const rc::Answer hit = search.nearest(q, n);
+        q.ray = camera.primary(p % n, p / n);
+        rc::Counters count;
+        const rc::Answer hit = search.nearest(q, count);
         if (hit.object < 0) continue;
         const rc::Vec3 h = q.ray.at(hit.t);
-        double mine = rc::kNoHit, want = rc::kNoHit;
-        for (int j = 0; j < s.size(); ++j) {
-            if (j == hit.object) continue;
-            const rc::Sphere& b = s.objects[j].bound;
-            mine = std::min(mine, tutorial::segmentDistance(b.c, q.ray.o, h) - b.r);
-            want = std::min(want, rc::segmentDistance(b.c, q.ray.o, h) - b.r);
-        }
-        INFO("pixel " << p);
+        const double want = gap(spheres, hit.object, q.ray.o, h);
+        const double mine = tutorial::safetyRadius(spheres, hit.object, q.ray.o, h);
+        INFO("pixel (" << p % n << ", " << p / n << "): expected radius " << want << ", yours " << mine);
         REQUIRE(std::abs(mine - want) <= closeEnough(20.0));
+        // The next pixel's ray, to the same sphere: would the cylinder answer it?
+        rc::Query next;
+        next.ray = camera.primary((p + 1) % n, (p + 1) / n);
+        const double t = rc::intersectSphere(next.ray, s.objects[hit.object].bound, rc::Start::Elsewhere);
+        if (!(t < rc::kNoHit)) continue;
+        const rc::Vec3 h2 = next.ray.at(t);
+        const rc::SafetyCylinder cyl{q.ray.o, h, want};
+        const double d2 = rc::segmentDistance(h2, q.ray.o, h) - want;
+        if (std::abs(d2) < 1e-9) continue;
+        INFO("the next pixel's segment to the same sphere");
+        REQUIRE(tutorial::insideCapsule(next.ray.o, h2, q.ray.o, h, mine) == cyl.contains(next.ray.o, h2));
+        hits += cyl.contains(next.ray.o, h2);
+        ++tested;
     }
+    CHECK(hits > 0);
+    CHECK(hits < tested);
 }

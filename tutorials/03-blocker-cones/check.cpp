@@ -2,6 +2,7 @@
 // lists built with it against the library's rc::BlockerLists.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -31,9 +32,14 @@ void randomPair(tutorial::Random& rnd, int kind, rc::Sphere& a, rc::Sphere& b) {
 
 }  // namespace
 
-TEST_CASE("hullDistance agrees with the library's outside the hull", "[tutorial03]") {
+// Extra spheres in a list are allowed (the list stays correct, each costs one more
+// intersection test per cache hit), a missing one never is. Lists longer than this
+// many times the library's no longer count as an answer.
+constexpr double kMaxExtraFactor = 1.5;
+
+TEST_CASE("hullDistance never puts a point of the hull outside it", "[tutorial03]") {
     tutorial::Random rnd(1986);
-    int outside = 0, inside = 0;
+    int outside = 0, inside = 0, inexact = 0;
     for (int i = 0; i < 50000; ++i) {
         rc::Sphere a, b;
         randomPair(rnd, i, a, b);
@@ -44,24 +50,31 @@ TEST_CASE("hullDistance agrees with the library's outside the hull", "[tutorial0
         const double want = rc::hullDistance(p, a, b);
         const double got = tutorial::hullDistance(p, a, b);
         INFO("case " << i << ": a = (" << a.c.x << ", " << a.c.y << ", " << a.c.z << ") r " << a.r << ", b = ("
-                     << b.c.x << ", " << b.c.y << ", " << b.c.z << ") r " << b.r << "; expected " << want
-                     << ", got " << got);
+                     << b.c.x << ", " << b.c.y << ", " << b.c.z << ") r " << b.r << "; p = (" << p.x << ", " << p.y
+                     << ", " << p.z << "); expected " << want << ", got " << got);
         if (want > 1e-9) {
-            // Outside: the distance is exact, whatever way it is computed
-            REQUIRE(std::abs(got - want) <= 1e-9 * std::max(1.0, want));
+            // Outside: the exact distance, or less (a larger hull: extra blockers, still
+            // correct), never more (a sphere that meets the hull would be left out)
+            INFO("your distance is larger than the true one: a sphere this close would be left off the list");
+            REQUIRE(got <= want + 1e-9 * std::max(1.0, want));
+            inexact += got < want - 1e-9 * std::max(1.0, want);
             ++outside;
         } else if (want < -1e-9) {
-            // Inside: only the sign is asked for
+            INFO("this point is inside the hull, but your distance says outside");
             REQUIRE(got <= 1e-9);
             ++inside;
         }
     }
+    WARN("hullDistance: " << outside - inexact << " of " << outside
+                          << " points outside the hull got the exact distance; " << inexact
+                          << " got less (a larger hull than the paper's cone: allowed, it lengthens the lists)");
     CHECK(outside > 1000);
     CHECK(inside > 1000);
 }
 
-TEST_CASE("meetsHull decisions built on hullDistance agree with the library's", "[tutorial03]") {
+TEST_CASE("meetsHull decisions built on hullDistance keep every sphere that meets the hull", "[tutorial03]") {
     tutorial::Random rnd(1984);
+    int meets = 0, extra = 0;
     for (int i = 0; i < 50000; ++i) {
         rc::Sphere a, b;
         randomPair(rnd, i, a, b);
@@ -71,12 +84,18 @@ TEST_CASE("meetsHull decisions built on hullDistance agree with the library's", 
         const rc::Sphere s{c, rnd.uniform(0.0, 1.5)};
         const double margin = rc::hullDistance(s.c, a, b) - s.r;
         if (std::abs(margin) < 1e-7) continue;  // within rounding of touching
-        INFO("case " << i);
-        REQUIRE((tutorial::hullDistance(s.c, a, b) <= s.r) == rc::meetsHull(s, a, b, 0.0));
+        const bool want = rc::meetsHull(s, a, b, 0.0);
+        const bool mine = tutorial::hullDistance(s.c, a, b) <= s.r;
+        INFO("case " << i << ": a sphere that meets the hull, left out");
+        if (want) REQUIRE(mine);
+        meets += want;
+        extra += mine && !want;
     }
+    INFO("spheres that meet the hull: " << meets << "; extra spheres your hull takes in: " << extra);
+    REQUIRE(extra <= (kMaxExtraFactor - 1.0) * meets);
 }
 
-TEST_CASE("blocker lists of cube:4 built with hullDistance equal the library's", "[tutorial03]") {
+TEST_CASE("blocker lists of cube:4 built with hullDistance hold the library's", "[tutorial03]") {
     const rc::Scene s = rc::makeBuiltin("cube:4");
     const rc::LinearSearch linear(s);
     rc::BlockerLists lists(s, linear);
@@ -86,7 +105,7 @@ TEST_CASE("blocker lists of cube:4 built with hullDistance equal the library's",
     for (int id = 0; id < s.size(); ++id) sites.push_back(id);
     sites.push_back(lists.eyeSite());
     for (int k = 0; k < int(s.lights.size()); ++k) sites.push_back(lists.lightSite(k));
-    int nonEmpty = 0;
+    long nonEmpty = 0, libraryTotal = 0, extra = 0;
     for (int origin : sites)
         for (int target : sites) {
             if (origin == target) continue;
@@ -98,9 +117,20 @@ TEST_CASE("blocker lists of cube:4 built with hullDistance equal the library's",
             // The library keeps its lists nearest first; compare them as sets
             std::vector<int> want = lists.get(origin, target, n).ids;
             std::sort(want.begin(), want.end());
-            INFO("origin site " << origin << ", target site " << target);
-            REQUIRE(mine == want);
+            std::vector<int> missing;
+            std::set_difference(want.begin(), want.end(), mine.begin(), mine.end(), std::back_inserter(missing));
+            INFO("origin site " << origin << ", target site " << target << ": your list leaves out "
+                                << missing.size() << " potential blocker(s), the first is sphere "
+                                << (missing.empty() ? -1 : missing.front()));
+            REQUIRE(missing.empty());
+            extra += long(mine.size() - want.size());
+            libraryTotal += long(want.size());
             nonEmpty += !want.empty();
         }
+    WARN("cube:4's blocker lists: the library's hold " << libraryTotal << " spheres, yours " << libraryTotal + extra
+                                                        << " (" << extra << " extra)");
+    INFO("your lists hold " << extra << " extra spheres on top of the library's " << libraryTotal
+                            << ": more than " << kMaxExtraFactor << " times as long, the cache loses its point");
+    REQUIRE(double(libraryTotal + extra) <= kMaxExtraFactor * double(libraryTotal));
     CHECK(nonEmpty > 100);
 }

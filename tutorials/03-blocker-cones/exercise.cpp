@@ -1,5 +1,5 @@
-// Tutorial 03, your exercise: the distance to the hull of two spheres. Build and run:
-//   cmake --build build --target tutorial_03_check_stub && build/tutorials/tutorial_03_check_stub
+// Tutorial 03, your exercise: the distance to the hull of two spheres. This file is yours to edit. Check it with
+//   cmake --build build --target tutorial-03      (or: ctest --preset student -R 03)
 #include <glm/geometric.hpp>
 
 #include "exercise.h"

@@ -1,8 +1,14 @@
-// Tutorial 04's check: tutorial::seedFill must visit every pixel once, answer pixels from
-// the cache only when the cache holds their key, grow each region through 4-neighbours,
-// and start exactly as many regions as the library's rc::BreadthFirstOrder does.
+// Tutorial 04's check: tutorial::seedFill must seed or answer every pixel once, answer
+// pixels from the cache only when the cache holds their key, grow each region through
+// 4-neighbours, defer (not search) every pixel at a region's border, finish a band
+// before the next (the queue's bound), and start exactly as many regions as the
+// library's rc::BreadthFirstOrder does with the same bands.
 #include <climits>
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -18,8 +24,8 @@ namespace {
 // Drives the library's breadth-first order over one ray-tree path (no children) with a
 // one-entry cache that holds the key of the last complete search. Returns the number of
 // regions it seeds.
-long libraryRegions(int width, int height, const std::vector<int>& key) {
-    rc::BreadthFirstOrder order(width, 0, height, 0, true, [](int pixel) {
+long libraryRegions(int width, int height, int band, const std::vector<int>& key) {
+    rc::BreadthFirstOrder order(width, 0, height, band, true, [](int pixel) {
         rc::RayTask t;
         t.pixel = pixel;
         return t;
@@ -39,33 +45,118 @@ long libraryRegions(int width, int height, const std::vector<int>& key) {
     return long(order.regions());
 }
 
-// Checks the fill's rules and returns how many regions it seeded
-long checkFill(int width, int height, const std::vector<int>& key, const std::vector<tutorial::Visit>& visits) {
-    REQUIRE(visits.size() == key.size());
-    std::vector<int> region(key.size(), -1);
-    int current = -1, cached = 0;
+// A small map of the image for a failure message: each pixel's key (a letter), and
+// each pixel's region so far (a digit, '.' not yet visited, '*' the pixel in question)
+std::string map(int width, int height, const std::vector<int>& key, const std::vector<int>& region, int at) {
+    if (width > 48 || height > 48) return "(image too large to draw)";
+    std::ostringstream out;
+    // Catch2 wraps lines at 80 columns: the legend goes first, the two maps side by side
+    out << "left: the keys, a letter each; right: your regions so far, a digit each (region\n"
+           "number mod 10), '.' not yet visited; '*' marks the pixel\n";
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const int p = y * width + x;
+            out << (p == at ? '*' : char('a' + ((key[p] % 26) + 26) % 26));
+        }
+        out << "   ";
+        for (int x = 0; x < width; ++x) {
+            const int p = y * width + x;
+            out << (p == at ? '*' : region[p] < 0 ? '.' : char('0' + region[p] % 10));
+        }
+        out << '\n';
+    }
+    return out.str();
+}
+
+struct FillReport {
+    long regions = 0;
+    long deferrals = 0;
+};
+
+// Checks the fill's rules and returns how many regions it seeded and how often it deferred
+FillReport checkFill(int width, int height, int band, const std::vector<int>& key,
+                     const std::vector<tutorial::Visit>& visits) {
+    const int rows = band <= 0 || band > height ? height : band;
+    auto bandOf = [&](int p) { return p / width / rows; };
+    std::vector<int> region(key.size(), -1), deferredIn(key.size(), -1);
+    std::vector<int> members;  // the current region's pixels
+    int current = -1, cached = 0, currentBand = 0;
+    FillReport report;
+    auto fail = [&](const std::string& what, int p) {
+        FAIL(what << " at pixel (" << p % width << ", " << p / width << ") of a " << width << "x" << height
+                  << " image worked in bands of " << rows << " rows\n"
+                  << map(width, height, key, region, p));
+    };
+    // A region may end only when every pixel at its border was tested and deferred
+    auto endRegion = [&] {
+        for (int p : members) {
+            const int x = p % width, y = p / width;
+            const int nb[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+            for (const auto& n : nb) {
+                if (n[0] < 0 || n[1] < 0 || n[0] >= width || n[1] >= height) continue;
+                const int q = n[1] * width + n[0];
+                if (bandOf(q) != currentBand || region[q] >= 0) continue;
+                if (key[q] == cached)
+                    fail("the region stopped growing although this neighbour has the seed's key (it must be answered)", q);
+                if (deferredIn[q] != current)
+                    fail("this pixel borders the region but was never tested against the cache and deferred "
+                         "(a Defer visit) while the region grew",
+                         q);
+            }
+        }
+        members.clear();
+    };
     for (std::size_t i = 0; i < visits.size(); ++i) {
         const int p = visits[i].pixel;
-        INFO("visit " << i << ": pixel (" << p % width << ", " << p / width << ")");
-        REQUIRE(p >= 0);
-        REQUIRE(p < width * height);
-        REQUIRE(region[p] < 0);  // every pixel once
-        if (visits[i].seed) {
-            cached = key[p];
-            region[p] = ++current;
-            continue;
+        INFO("visit " << i << " of " << visits.size());
+        if (p < 0 || p >= width * height) FAIL("pixel index " << p << " is outside the image");
+        if (region[p] >= 0) fail("this pixel was already seeded or answered", p);
+        if (bandOf(p) < currentBand) fail("this pixel belongs to a band that was already finished", p);
+        if (bandOf(p) > currentBand) {
+            for (int q = currentBand * rows * width; q < std::min(height, (currentBand + 1) * rows) * width; ++q)
+                if (region[q] < 0) fail("the next band started before this pixel of the band above was done", q);
+            if (visits[i].step != tutorial::Step::Seed) fail("a band must start with a seed", p);
         }
-        REQUIRE(current >= 0);     // the first visit must seed
-        REQUIRE(key[p] == cached);  // the cache can only answer its own key
-        // The fill grows through 4-neighbours already in the region
-        const int x = p % width, y = p / width;
-        const bool joined = (x > 0 && region[p - 1] == current) || (x + 1 < width && region[p + 1] == current) ||
-                            (y > 0 && region[p - width] == current) ||
-                            (y + 1 < height && region[p + width] == current);
-        REQUIRE(joined);
-        region[p] = current;
+        switch (visits[i].step) {
+            case tutorial::Step::Seed:
+                if (current >= 0) endRegion();
+                currentBand = bandOf(p);
+                cached = key[p];
+                region[p] = ++current;
+                members.push_back(p);
+                break;
+            case tutorial::Step::Answer:
+            case tutorial::Step::Defer: {
+                if (current < 0) fail("the first visit must be a seed", p);
+                const bool answer = visits[i].step == tutorial::Step::Answer;
+                if (answer && key[p] != cached) fail("the cache answered a pixel whose key is not the seed's", p);
+                if (!answer && key[p] == cached) fail("deferred a pixel the cache could answer", p);
+                // The fill grows (and defers) only through 4-neighbours already in the region
+                const int x = p % width, y = p / width;
+                const bool joined = (x > 0 && region[p - 1] == current) ||
+                                    (x + 1 < width && region[p + 1] == current) ||
+                                    (y > 0 && region[p - width] == current) ||
+                                    (y + 1 < height && region[p + width] == current);
+                if (!joined)
+                    fail(answer ? "answered a pixel that touches no pixel of the current region"
+                                : "deferred a pixel that touches no pixel of the current region",
+                         p);
+                if (answer) {
+                    region[p] = current;
+                    members.push_back(p);
+                } else {
+                    deferredIn[p] = current;
+                    ++report.deferrals;
+                }
+                break;
+            }
+        }
     }
-    return current + 1;
+    if (current >= 0) endRegion();
+    for (int p = 0; p < width * height; ++p)
+        if (region[p] < 0) fail("this pixel was never seeded or answered", p);
+    report.regions = current + 1;
+    return report;
 }
 
 // Discs and boxes of random keys over a background: regions of every shape, some keys
@@ -90,15 +181,22 @@ std::vector<int> randomKeys(tutorial::Random& rnd, int width, int height) {
 
 }  // namespace
 
-TEST_CASE("seedFill fills random images region by region", "[tutorial04]") {
+TEST_CASE("seedFill fills random images region by region, band by band", "[tutorial04]") {
     tutorial::Random rnd(1979);  // Smith's tint fill
+    long deferrals = 0;
     for (int i = 0; i < 300; ++i) {
         const int width = 1 + rnd.index(40), height = 1 + rnd.index(40);
+        const int band = i % 3 == 0 ? 0 : 1 + rnd.index(height);
         const std::vector<int> key = randomKeys(rnd, width, height);
-        INFO("image " << i << " (" << width << "x" << height << ")");
-        const long regions = checkFill(width, height, key, tutorial::seedFill(width, height, key));
-        REQUIRE(regions == libraryRegions(width, height, key));
+        INFO("image " << i << " (" << width << "x" << height << ", bands of " << band << " rows; 0: one band)");
+        const FillReport mine = checkFill(width, height, band, key, tutorial::seedFill(width, height, band, key));
+        const long want = libraryRegions(width, height, band, key);
+        INFO("your fill seeded " << mine.regions << " regions, the library's breadth-first order " << want
+                                 << ": one per 4-connected piece of equal key in each band");
+        REQUIRE(mine.regions == want);
+        deferrals += mine.deferrals;
     }
+    CHECK(deferrals > 0);
 }
 
 TEST_CASE("seedFill makes one complete search per region of cube:3's eye rays", "[tutorial04]") {
@@ -113,6 +211,9 @@ TEST_CASE("seedFill makes one complete search per region of cube:3's eye rays", 
         rc::Counters n;
         key[p] = search.nearest(q, n).object;  // the sphere the eye ray hits, -1 for none
     }
-    const long regions = checkFill(width, height, key, tutorial::seedFill(width, height, key));
-    REQUIRE(regions == libraryRegions(width, height, key));
+    for (int band : {0, 8}) {
+        INFO("bands of " << band << " rows (0: one band)");
+        const FillReport mine = checkFill(width, height, band, key, tutorial::seedFill(width, height, band, key));
+        REQUIRE(mine.regions == libraryRegions(width, height, band, key));
+    }
 }

@@ -2,6 +2,7 @@
 // cases (where the textbook formula is fine too) and on stiff ones (where it is not).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <catch2/catch.hpp>
 
@@ -73,5 +74,37 @@ TEST_CASE("stableRoots agrees with the library from inside and on the surface", 
         rc::Vec3 d = rnd.direction();
         while (at == 1.0 && std::abs(glm::dot(d, n)) < 0.1) d = rnd.direction();
         compare(rc::Ray{s.c + at * s.r * n, d}, s, 0.0);
+    }
+}
+
+TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a large sphere", "[tutorial06]") {
+    // Integer coordinates, so the offset f and c = |f|^2 - r^2 are exact: an origin a
+    // little outside a large sphere, where the near root is tiny and -b - sqrt(disc)
+    // subtracts two nearly equal numbers. Only t0 = c / q (Vieta) keeps its digits.
+    tutorial::Random rnd(1986);
+    for (int i = 0; i < 20000; ++i) {
+        const double r = std::round(rnd.logUniform(3.0, 6.0));
+        const rc::Vec3 c{std::round(rnd.uniform(-100, 100)), std::round(rnd.uniform(-100, 100)),
+                         std::round(rnd.uniform(-100, 100))};
+        // f = (r, m, n) with its axes permuted and signs flipped: |f|^2 - r^2 = m^2 + n^2
+        double f[3] = {r, double(1 + rnd.index(20)), double(rnd.index(20))};
+        std::swap(f[0], f[rnd.index(3)]);
+        for (double& x : f)
+            if (rnd.chance(0.5)) x = -x;
+        const rc::Vec3 o = c + rc::Vec3{f[0], f[1], f[2]};
+        const rc::Sphere s{c, r};
+        // Aim at a point well inside the sphere: a clear hit, the near root tiny
+        const rc::Ray ray{o, glm::normalize(c + 0.5 * r * rnd.direction() - o)};
+        const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
+        const rc::SphereRoots got = tutorial::stableRoots(ray, s);
+        INFO("sphere radius " << r << ", origin " << std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - r
+                              << " outside it; library t0 " << want.t0 << ", yours " << got.t0 << " (relative error "
+                              << std::abs(got.t0 - want.t0) / want.t0 << ")");
+        REQUIRE(want.hit);
+        REQUIRE(got.hit);
+        // The near root to 1e-12 of itself: the subtraction -b - sqrt(disc) loses
+        // about r / t0 units in the last place, up to a million here
+        REQUIRE(std::abs(got.t0 - want.t0) <= 1e-12 * want.t0);
+        REQUIRE(std::abs(got.t1 - want.t1) <= 1e-12 * want.t1);
     }
 }

@@ -1,0 +1,18 @@
+// Tutorial 04: the exercise as shipped, a READ-ONLY copy of exercise.cpp. Do not edit it:
+// your work goes in exercise.cpp. The docs quote this file and CI checks that it still fails.
+#include "exercise.h"
+
+namespace tutorial {
+
+// [stub]
+std::vector<Visit> seedFill(int width, int height, [[maybe_unused]] int band, const std::vector<int>& key) {
+    // TODO: this is scanline order: it seeds a region every time the key changes along
+    // a row. Fill each region two-dimensionally instead, band by band.
+    std::vector<Visit> visits;
+    for (int p = 0; p < width * height; ++p)
+        visits.push_back({p, p % width == 0 || key[p] != key[p - 1] ? Step::Seed : Step::Answer});
+    return visits;
+}
+// [stub]
+
+}  // namespace tutorial

@@ -1,0 +1,25 @@
+// Tutorial 06, a wrong answer the check must reject: Vieta for the near root, but the textbook discriminant b*b - c
+#include <cmath>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "exercise.h"
+
+namespace tutorial {
+
+rc::SphereRoots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
+    const rc::Vec3 f = ray.o - s.c;
+    const double b = glm::dot(f, ray.d);
+    // r^2 - |l|^2 with l the centre's perpendicular offset: no large squares cancel
+    const double disc = b * b - (glm::dot(f, f) - s.r * s.r);
+    if (disc < 0.0) return {};
+    // q = -b - sign(b) sqrt(disc) adds two numbers of the same sign
+    const double q = b > 0.0 ? -b - std::sqrt(disc) : -b + std::sqrt(disc);
+    const double c = glm::dot(f, f) - s.r * s.r;
+    double t0 = q != 0.0 ? c / q : 0.0, t1 = q;  // Vieta: t0 t1 = c
+    if (t0 > t1) std::swap(t0, t1);
+    return {true, t0, t1};
+}
+
+}  // namespace tutorial
