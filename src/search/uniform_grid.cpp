@@ -35,15 +35,20 @@ UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(sc
     lo_ -= Vec3(pad);
     hi_ += Vec3(pad);
     const Vec3 size = hi_ - lo_;
-    const double volume = std::max(size.x * size.y * size.z, 1e-300);
-    const double cellsWanted = std::max(1.0, density * scene.size());
+    // A flat or coincident scene has (almost) no volume: each side counts at least a
+    // millionth of the longest, so the cells stay boxes instead of slivers
+    const double longest = std::max(size.x, std::max(size.y, size.z));
+    double volume = 1.0;
+    for (int a = 0; a < 3; ++a) volume *= std::max(size[a], 1e-6 * longest);
+    volume = std::max(volume, 1e-300);
+    const double n = double(scene.size());
+    const double cellsWanted = std::clamp(density * n, 1.0, double(kMaxCells));
     const double side = std::cbrt(volume / cellsWanted);
     for (int a = 0; a < 3; ++a) res_[a] = 1 + clampedCell(std::ceil(size[a] / side) - 1.0, 128);
-    cellSize_ = size / Vec3(res_[0], res_[1], res_[2]);
 
-    // Count, then fill (compressed rows)
-    const int cells = res_[0] * res_[1] * res_[2];
-    std::vector<std::uint32_t> count(cells + 1, 0);
+    // [grid-caps]
+    // Count the references each resolution would hold (in 64 bits: no product wraps); where
+    // the objects overlap too much for it, halve the resolution until they fit
     auto range = [&](const Object& o, std::array<int, 3>& a, std::array<int, 3>& b) {
         const Vec3 olo = (o.bound.c - Vec3(o.bound.r + pad) - lo_) / cellSize_;
         const Vec3 ohi = (o.bound.c + Vec3(o.bound.r + pad) - lo_) / cellSize_;
@@ -52,6 +57,24 @@ UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(sc
             b[k] = clampedCell(ohi[k], res_[k]);
         }
     };
+    const std::int64_t referenceCap =
+        std::min(kMaxReferences, std::max(kMinReferenceCap, kReferencesPerObject * std::int64_t(scene.size())));
+    for (;;) {
+        cellSize_ = size / Vec3(res_[0], res_[1], res_[2]);
+        std::int64_t references = 0;
+        for (int id = 0; id < scene.size() && references <= referenceCap; ++id) {
+            std::array<int, 3> a, b;
+            range(scene.objects[id], a, b);
+            references += std::int64_t(b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1);
+        }
+        if (references <= referenceCap || res_ == std::array<int, 3>{1, 1, 1}) break;
+        for (int& r : res_) r = std::max(1, r / 2);
+    }
+    // [grid-caps]
+
+    // Count, then fill (compressed rows)
+    const std::size_t cells = std::size_t(res_[0]) * res_[1] * res_[2];
+    std::vector<std::size_t> count(cells + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
         for (int id = 0; id < scene.size(); ++id) {
             std::array<int, 3> a, b;
@@ -59,13 +82,13 @@ UniformGrid::UniformGrid(const Scene& scene, double density) : CompleteSearch(sc
             for (int z = a[2]; z <= b[2]; ++z)
                 for (int y = a[1]; y <= b[1]; ++y)
                     for (int x = a[0]; x <= b[0]; ++x) {
-                        const int c = cellIndex(x, y, z);
+                        const std::size_t c = cellIndex(x, y, z);
                         if (pass == 0) ++count[c + 1];
                         else ids_[cellStart_[c] + count[c]++] = id;
                     }
         }
         if (pass == 0) {
-            for (int c = 0; c < cells; ++c) count[c + 1] += count[c];
+            for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
             cellStart_ = count;
             ids_.resize(cellStart_[cells]);
             std::fill(count.begin(), count.end(), 0);
@@ -84,7 +107,7 @@ std::vector<int> UniformGrid::objectsInBox(const Vec3& lo, const Vec3& hi) const
     for (int z = a[2]; z <= b[2]; ++z)
         for (int y = a[1]; y <= b[1]; ++y)
             for (int x = a[0]; x <= b[0]; ++x) {
-                const int c = cellIndex(x, y, z);
+                const std::size_t c = cellIndex(x, y, z);
                 out.insert(out.end(), ids_.begin() + cellStart_[c], ids_.begin() + cellStart_[c + 1]);
             }
     std::sort(out.begin(), out.end());
@@ -161,8 +184,8 @@ Answer UniformGrid::nearest(const Query& q, Counters& n) const {
     newStamp();
     walk(q.ray, q.tmax, 0, [&](const int* cell, double exit) {
         // Test the cell's objects, each once per ray
-        const int c = cellIndex(cell[0], cell[1], cell[2]);
-        for (std::uint32_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
+        const std::size_t c = cellIndex(cell[0], cell[1], cell[2]);
+        for (std::size_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
             const int id = ids_[i];
             if (mailbox_[id] == stamp_) continue;
             mailbox_[id] = stamp_;
@@ -201,8 +224,8 @@ void UniformGrid::objectsNearSegment(const Vec3& a, const Vec3& b, double radius
         for (int z = std::max(0, cell[2] - ring); z <= std::min(res_[2] - 1, cell[2] + ring); ++z)
             for (int y = std::max(0, cell[1] - ring); y <= std::min(res_[1] - 1, cell[1] + ring); ++y)
                 for (int x = std::max(0, cell[0] - ring); x <= std::min(res_[0] - 1, cell[0] + ring); ++x) {
-                    const int c = cellIndex(x, y, z);
-                    for (std::uint32_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
+                    const std::size_t c = cellIndex(x, y, z);
+                    for (std::size_t i = cellStart_[c]; i < cellStart_[c + 1]; ++i) {
                         const int id = ids_[i];
                         if (mailbox_[id] == stamp_) continue;
                         mailbox_[id] = stamp_;

@@ -16,11 +16,22 @@ namespace rc {
 /// ties included: a cell's hits are only final once they lie before the cell's exit.
 class UniformGrid final : public CompleteSearch {
 public:
+    /// At most this many cells (128 per axis), and at most max(kMinReferenceCap,
+    /// kReferencesPerObject * n) object references, never more than kMaxReferences: where the
+    /// objects overlap so much that a fine grid would list them many times over (coincident
+    /// spheres), the grid gets coarser, down to one cell, which is the linear scan.
+    static constexpr std::int64_t kMaxCells = std::int64_t(1) << 21;
+    static constexpr std::int64_t kReferencesPerObject = 64;
+    static constexpr std::int64_t kMinReferenceCap = std::int64_t(1) << 22;
+    static constexpr std::int64_t kMaxReferences = std::int64_t(1) << 27;
+
     /// `density`: cells per object, about; the grid has about density * n cells.
     explicit UniformGrid(const Scene& scene, double density = 4.0);
     Answer nearest(const Query& q, Counters& n) const override;
     std::string name() const override { return "grid"; }
     std::array<int, 3> resolution() const { return res_; }
+    /// Object references held by all cells together (an object counts once per cell).
+    std::int64_t references() const { return std::int64_t(ids_.size()); }
     /// Objects whose bounding boxes overlap the box [lo, hi] (each once, ascending).
     std::vector<int> objectsInBox(const Vec3& lo, const Vec3& hi) const;
     /// Objects whose bounding boxes come within `radius` of the segment a-b, and maybe a
@@ -32,7 +43,9 @@ public:
     double nearRadius() const override { return std::min(cellSize_.x, std::min(cellSize_.y, cellSize_.z)); }
 
 private:
-    int cellIndex(int x, int y, int z) const { return (z * res_[1] + y) * res_[0] + x; }
+    std::size_t cellIndex(int x, int y, int z) const {
+        return (std::size_t(z) * std::size_t(res_[1]) + std::size_t(y)) * std::size_t(res_[0]) + std::size_t(x);
+    }
     /// 3D-DDA along `r` up to `tmax` over the grid widened by `margin` cells; `visit(cell,
     /// exit)` gets each cell (indices may be outside [0, res) by up to `margin`) and the
     /// distance where the ray leaves it, and returns whether to go on.
@@ -41,7 +54,7 @@ private:
     void newStamp() const;
     Vec3 lo_{0.0}, hi_{0.0}, cellSize_{1.0};
     std::array<int, 3> res_{1, 1, 1};
-    std::vector<std::uint32_t> cellStart_;  ///< CSR: objects of cell c are ids_[start[c], start[c+1])
+    std::vector<std::size_t> cellStart_;  ///< CSR: objects of cell c are ids_[start[c], start[c+1])
     std::vector<int> ids_;
     mutable std::vector<std::uint32_t> mailbox_;  ///< last query that tested each object
     mutable std::uint32_t stamp_ = 0;
