@@ -5,10 +5,6 @@
 
 namespace rc {
 
-namespace {
-constexpr std::uint64_t kAbsent = std::numeric_limits<std::uint64_t>::max();
-}
-
 void BeamTreeBuilder::onEvent(const TraceEvent& e) {
     if (e.deferred) return;
     record(e.task.node, e.task.pixel, e.task.query.origin.object, e.task.query.origin.inside,
@@ -16,53 +12,60 @@ void BeamTreeBuilder::onEvent(const TraceEvent& e) {
 }
 
 void BeamTreeBuilder::record(int path, int pixel, int originObject, bool inside, int hitObject) {
-    auto [it, fresh] = keys_.try_emplace(path);
-    if (fresh) it->second.assign(std::size_t(width_) * height_, kAbsent);
     // Same origin object (and side), same hit object: the same beam
-    const std::uint64_t origin = std::uint64_t(std::uint32_t(originObject + 1)) * 2 + (inside ? 1 : 0);
-    it->second[pixel] = (origin << 32) | std::uint32_t(hitObject + 1);
+    const std::uint32_t origin = std::uint32_t(originObject + 1) * 2u + (inside ? 1u : 0u);
+    rays_by_path_[path].push_back(Ray{pixel, origin, std::uint32_t(hitObject + 1)});
     ++rays_;
 }
 
 void BeamTreeBuilder::merge(const BeamTreeBuilder& other, const std::vector<int>& pathMap) {
-    for (const auto& [path, keys] : other.keys_) {
-        auto [it, fresh] = keys_.try_emplace(pathMap.at(path));
-        if (fresh) it->second.assign(keys.size(), kAbsent);
-        for (std::size_t p = 0; p < keys.size(); ++p)
-            if (keys[p] != kAbsent) it->second[p] = keys[p];
+    for (const auto& [path, rays] : other.rays_by_path_) {
+        std::vector<Ray>& to = rays_by_path_[pathMap.at(path)];
+        to.insert(to.end(), rays.begin(), rays.end());
     }
     rays_ += other.rays_;
 }
 
 std::vector<int> BeamTreeBuilder::paths() const {
     std::vector<int> p;
-    for (const auto& [path, _] : keys_) p.push_back(path);
+    for (const auto& [path, _] : rays_by_path_) p.push_back(path);
     std::sort(p.begin(), p.end());
     return p;
 }
 
-std::vector<int> BeamTreeBuilder::labels(int path) const {
-    std::vector<int> label(std::size_t(width_) * height_, -1);
-    auto it = keys_.find(path);
-    if (it == keys_.end()) return label;
-    const std::vector<std::uint64_t>& key = it->second;
+std::vector<BeamTreeBuilder::Ray> BeamTreeBuilder::byPixel(const std::vector<Ray>& rays) {
+    std::vector<Ray> sorted = rays;
+    std::stable_sort(sorted.begin(), sorted.end(), [](const Ray& a, const Ray& b) { return a.pixel < b.pixel; });
+    // Keep the last of each pixel's rays (a pixel traced again replaces its key)
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+        if (i + 1 < sorted.size() && sorted[i + 1].pixel == sorted[i].pixel) continue;
+        sorted[n++] = sorted[i];
+    }
+    sorted.resize(n);
+    return sorted;
+}
+
+int BeamTreeBuilder::labelBeams(const std::vector<Ray>& rays, std::vector<int>& index, std::vector<int>& label) const {
+    for (std::size_t i = 0; i < rays.size(); ++i) index[std::size_t(rays[i].pixel)] = int(i);
+    label.assign(rays.size(), -1);
     // [beam-label]
     // Flood fill connected pixels with equal (origin, hit) keys
     int next = 0;
     std::vector<int> stack;
-    for (int p = 0; p < width_ * height_; ++p) {
-        if (key[p] == kAbsent || label[p] >= 0) continue;
-        label[p] = next;
-        stack.push_back(p);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        if (label[i] >= 0) continue;
+        label[i] = next;
+        stack.push_back(int(i));
         while (!stack.empty()) {
-            const int q = stack.back();
+            const Ray& q = rays[std::size_t(stack.back())];
             stack.pop_back();
-            const int x = q % width_, y = q / width_;
+            const int x = q.pixel % width_, y = q.pixel / width_;
             const int nb[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
             for (const auto& n : nb) {
                 if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
-                const int r = n[1] * width_ + n[0];
-                if (label[r] < 0 && key[r] == key[p]) {
+                const int r = index[std::size_t(n[1]) * width_ + n[0]];
+                if (r >= 0 && label[r] < 0 && rays[r].sameBeam(rays[i])) {
                     label[r] = next;
                     stack.push_back(r);
                 }
@@ -71,15 +74,26 @@ std::vector<int> BeamTreeBuilder::labels(int path) const {
         ++next;
     }
     // [beam-label]
-    return label;
+    for (const Ray& r : rays) index[std::size_t(r.pixel)] = -1;
+    return next;
+}
+
+std::vector<int> BeamTreeBuilder::labels(int path) const {
+    std::vector<int> image(std::size_t(width_) * height_, -1);
+    auto it = rays_by_path_.find(path);
+    if (it == rays_by_path_.end()) return image;
+    const std::vector<Ray> rays = byPixel(it->second);
+    std::vector<int> label;
+    labelBeams(rays, image, label);
+    for (std::size_t i = 0; i < rays.size(); ++i) image[std::size_t(rays[i].pixel)] = label[i];
+    return image;
 }
 
 BeamTreeStats BeamTreeBuilder::build() const {
     BeamTreeStats s;
-    for (const auto& [path, _] : keys_) {
-        const std::vector<int> l = labels(path);
-        s.nodes += l.empty() ? 0 : *std::max_element(l.begin(), l.end()) + 1;
-    }
+    std::vector<int> index(std::size_t(width_) * height_, -1);
+    std::vector<int> label;
+    for (const auto& [path, rays] : rays_by_path_) s.nodes += labelBeams(byPixel(rays), index, label);
     // [coherence]
     s.averageRayTreeSize = double(rays_) / (double(width_) * height_);
     s.coherence = s.nodes > 0 ? s.averageRayTreeSize / double(s.nodes) : 0.0;

@@ -23,6 +23,8 @@ struct BeamTreeStats {
 };
 
 /// Collects (path, origin, hit) per pixel from trace events; `build()` labels beams.
+/// Memory: the rays it was given (12 bytes each) plus one image of scratch while it
+/// labels, never an image per ray-tree path.
 class BeamTreeBuilder final : public TraceSink {
 public:
     BeamTreeBuilder(int width, int height) : width_(width), height_(height) {}
@@ -36,11 +38,26 @@ public:
     /// Beam label of every pixel at one path (-1: no ray there); labels count from 0.
     std::vector<int> labels(int path) const;
     std::vector<int> paths() const;
+    /// Rays held (for checking that memory follows the rays, not paths x pixels).
+    std::int64_t storedRays() const { return rays_; }
 
 private:
+    /// One recorded ray: its pixel and its beam key (origin object and side; hit object).
+    struct Ray {
+        std::int32_t pixel;
+        std::uint32_t origin;
+        std::uint32_t hit;
+        bool sameBeam(const Ray& o) const { return origin == o.origin && hit == o.hit; }
+    };
+    /// The rays of one path sorted by pixel, the last recorded where a pixel has several.
+    static std::vector<Ray> byPixel(const std::vector<Ray>& rays);
+    /// Labels the beams of one path (`rays` from byPixel); `index` is an image of -1 on
+    /// entry and on return. Returns how many beams there are.
+    int labelBeams(const std::vector<Ray>& rays, std::vector<int>& index, std::vector<int>& label) const;
+
     int width_, height_;
     std::int64_t rays_ = 0;
-    std::unordered_map<int, std::vector<std::uint64_t>> keys_;  // path -> key per pixel
+    std::unordered_map<int, std::vector<Ray>> rays_by_path_;  // path -> rays in recording order
 };
 
 }  // namespace rc
