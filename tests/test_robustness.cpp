@@ -27,6 +27,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -60,8 +61,8 @@ struct Result {
 };
 
 /// Runs the CLI with `args` (no shell: arguments are passed as they are), stdout and
-/// stderr captured together.
-Result runCli(const std::vector<std::string>& args) {
+/// stderr captured together; `addressSpace` bytes (0: no limit) as with `ulimit -v`.
+Result runCli(const std::vector<std::string>& args, rlim_t addressSpace = 0) {
     static int counter = 0;
     const fs::path out = scratch("output_" + std::to_string(++counter) + ".txt");
     const pid_t pid = ::fork();
@@ -70,6 +71,10 @@ Result runCli(const std::vector<std::string>& args) {
         const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(fd, 1);
         ::dup2(fd, 2);
+        if (addressSpace > 0) {
+            const rlimit limit{addressSpace, addressSpace};
+            ::setrlimit(RLIMIT_AS, &limit);
+        }
         std::vector<char*> argv{const_cast<char*>(kCli.c_str())};
         for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
@@ -409,4 +414,28 @@ TEST_CASE("inputs the fuzzers found parse or fail cleanly and render", "[robustn
         if (scene->size() <= 32 && scene->lights.size() <= 8) CHECK(renderEveryWay(scene, 4, 2) == 27);
     }
     CHECK(files >= 0);
+}
+
+TEST_CASE("running out of memory is exit 2 with a message, not a signal", "[robust][cli][memory]") {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    // The sanitizers reserve terabytes of shadow memory: an address-space limit stops them
+    // before main. The release build runs this test.
+    SUCCEED("not under a sanitizer");
+#else
+    // 16384 x 16384 pixels need 6 GiB of sums; the limit is 1 GiB
+    const Result r = runCli({"render", "cube:2", "--width", "16384", "--height", "16384", "-q", "-o",
+                             scratch("huge.png").string()},
+                            rlim_t(1) << 30);
+    INFO(r.output);
+    REQUIRE(r.code == 2);
+    REQUIRE(contains(r.output, "out of memory"));
+    REQUIRE_FALSE(fs::exists(scratch("huge.png")));
+    // with threads too: the worker's failure reaches the caller
+    const Result t = runCli({"render", "cube:2", "--width", "16384", "--height", "4096", "--threads", "2", "-q",
+                             "--stats", scratch("huge.json").string(), "-o", scratch("huge.png").string()},
+                            rlim_t(1) << 30);
+    INFO(t.output);
+    REQUIRE(t.code == 2);
+    REQUIRE(contains(t.output, "out of memory"));
+#endif
 }

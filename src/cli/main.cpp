@@ -1,6 +1,7 @@
 // raycache: the command-line tool. Renders scenes with any cache and order, reports what
 // each did, and reproduces the paper's Table 1.
 #include <iostream>
+#include <new>
 
 #include <CLI/CLI.hpp>
 
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
         return 2;
     } catch (const std::invalid_argument& e) {
         std::cerr << "raycache: " << e.what() << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) {
+        // The scene or the image needs more memory than there is (or than ulimit -v allows)
+        std::cerr << "raycache: out of memory: the scene or the image is too large for the memory available\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "raycache: " << e.what() << "\n";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <thread>
 
 namespace rc {
@@ -30,30 +31,43 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
             sessions.back()->addSink(builders.back().get());
         }
     }
+    // A session belongs to its thread until the join; the calling thread sees only these
+    // atomics (each worker's fraction done) and, after the join, the sessions themselves
     std::atomic<bool> cancel{false};
     std::atomic<int> running{threads};
+    std::vector<std::atomic<double>> fraction(static_cast<std::size_t>(threads));
+    std::vector<std::exception_ptr> failure(static_cast<std::size_t>(threads));
     std::vector<std::thread> pool;
     for (int k = 0; k < threads; ++k) {
+        fraction[k].store(0.0);
         pool.emplace_back([&, k] {
             RenderSession& s = *sessions[k];
-            while (!cancel.load(std::memory_order_relaxed)) {
-                int n = 0;
-                while (n < 4096 && s.step()) ++n;
-                if (s.done()) break;
+            try {
+                while (!cancel.load(std::memory_order_relaxed)) {
+                    int n = 0;
+                    while (n < 4096 && s.step()) ++n;
+                    fraction[k].store(s.progress(), std::memory_order_relaxed);
+                    if (s.done()) break;
+                }
+            } catch (...) {  // e.g. std::bad_alloc: stop the others and rethrow on the caller
+                failure[k] = std::current_exception();
+                cancel = true;
             }
-            --running;
+            running.fetch_sub(1, std::memory_order_release);
         });
     }
     // [parallel-split]
-    while (running.load() > 0) {
+    while (running.load(std::memory_order_acquire) > 0) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        if (progress) {
+        if (progress && !cancel.load()) {
             double done = 0.0;
-            for (const auto& s : sessions) done += s->progress();
+            for (const auto& f : fraction) done += f.load(std::memory_order_relaxed);
             if (!progress(done / threads)) cancel = true;
         }
     }
     for (std::thread& t : pool) t.join();
+    for (const std::exception_ptr& e : failure)
+        if (e) std::rethrow_exception(e);
 
     // [parallel-merge]
     // Integer sums: the merged image is the same for any number of threads

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
 /// \brief Per-pixel sums in fixed point, so the order of additions cannot change a bit.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -16,26 +17,35 @@ class ImageAccumulator {
 public:
     static constexpr double kScale = 4294967296.0;  // 2^32
 
-    ImageAccumulator(int width = 0, int height = 0)
-        : width_(width), height_(height), sum_(std::size_t(width) * height * 3, 0) {}
+    ImageAccumulator(int width = 0, int height = 0) : ImageAccumulator(width, height, 0, height) {}
+    /// An image that holds only scanlines [rowBegin, rowEnd) (a thread's block); the other
+    /// pixels read as black and take no memory.
+    ImageAccumulator(int width, int height, int rowBegin, int rowEnd)
+        : width_(width), height_(height), first_(std::size_t(width) * std::size_t(rowBegin)),
+          sum_(std::size_t(width) * std::size_t(rowEnd - rowBegin) * 3, 0) {}
 
     // [accumulate]
     /// Adds a contribution to a pixel, rounded to a multiple of 2^-32.
     void add(int pixel, const Vec3& c) {
         for (int k = 0; k < 3; ++k) {
-            std::int64_t& sum = sum_[std::size_t(pixel) * 3 + k];
+            std::int64_t& sum = sum_[(std::size_t(pixel) - first_) * 3 + k];
             sum = saturatingAdd(sum, toFixed(c[k]));
         }
     }
     /// The pixel's sum so far.
     Vec3 value(int pixel) const {
-        const std::int64_t* p = &sum_[std::size_t(pixel) * 3];
+        const std::size_t i = (std::size_t(pixel) - first_) * 3;  // wraps below first_
+        if (i >= sum_.size()) return Vec3(0.0);
+        const std::int64_t* p = &sum_[i];
         return Vec3(double(p[0]), double(p[1]), double(p[2])) / kScale;
     }
     // [accumulate]
-    /// Adds another image of the same size, pixel by pixel.
+    /// Adds another image of the same size, pixel by pixel (the rows both hold).
     ImageAccumulator& operator+=(const ImageAccumulator& o) {
-        for (std::size_t i = 0; i < sum_.size() && i < o.sum_.size(); ++i) sum_[i] = saturatingAdd(sum_[i], o.sum_[i]);
+        const std::size_t begin = std::max(first_, o.first_) * 3;
+        const std::size_t end = std::min(first_ * 3 + sum_.size(), o.first_ * 3 + o.sum_.size());
+        for (std::size_t i = begin; i < end; ++i)
+            sum_[i - first_ * 3] = saturatingAdd(sum_[i - first_ * 3], o.sum_[i - o.first_ * 3]);
         return *this;
     }
     /// The 8-bit RGB image, clamped to [0, 1].
@@ -62,6 +72,7 @@ public:
 
 private:
     int width_, height_;
+    std::size_t first_ = 0;  ///< the first pixel held
     std::vector<std::int64_t> sum_;
 };
 
