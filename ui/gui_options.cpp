@@ -35,10 +35,11 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption heatmap("heatmap", "none | tests | hitmiss | order | beam", "mode");
     const QCommandLineOption screenshot("screenshot", "write the window to this PNG and exit", "file");
     const QCommandLineOption window("window", "window size of screenshots (default 1600x1000)", "WxH");
-    const QCommandLineOption select("select", "pixel to inspect", "x,y");
+    const QCommandLineOption select("select", "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray)", "x,y[:path]");
+    const QCommandLineOption accel("accel", "linear | grid | bvh: what answers complete searches (default linear)", "kind");
     const QCommandLineOption zoom("zoom", "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel", "F");
     const QCommandLineOption large("large-fonts", "bigger text, for a projector");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, zoom, large})
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, zoom, large})
         p.addOption(o);
     if (!p.parse(args)) {
         message = p.errorText();
@@ -92,8 +93,20 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     }
     if (p.isSet(select)) {
         int x = 0, y = 0;
-        if (!parsePair(p.value(select), ',', x, y)) { message = "--select must be x,y"; return ParseResult::Error; }
+        QString v = p.value(select);
+        const int colon = int(v.indexOf(':'));
+        if (colon >= 0) {
+            out.selectPath = v.mid(colon + 1).trimmed();
+            v = v.left(colon);
+            if (out.selectPath.isEmpty()) { message = "--select x,y:path needs a path after ':' (e.g. eye/reflection)"; return ParseResult::Error; }
+        }
+        if (!parsePair(v, ',', x, y)) { message = "--select must be x,y or x,y:path, not '" + p.value(select) + "'"; return ParseResult::Error; }
         out.select = QPoint(x, y);
+    }
+    if (p.isSet(accel)) {
+        const auto k = rc::parseAccelKind(p.value(accel).toStdString());
+        if (!k || *k == rc::AccelKind::Embree) { message = "--accel must be linear, grid or bvh, not '" + p.value(accel) + "'"; return ParseResult::Error; }
+        out.accel = *k;
     }
     if (p.isSet(zoom)) {
         bool ok = false;

@@ -23,6 +23,8 @@ struct GuiOptions {
     QString screenshot;          ///< PNG to write, then exit
     QSize window{1600, 1000};    ///< window size of screenshots
     QPoint select{-1, -1};       ///< pixel to inspect
+    QString selectPath;          ///< its ray at this path (cache-tree label, e.g. eye/reflection); empty: the eye ray
+    rc::AccelKind accel = rc::AccelKind::Linear;
     double zoom = 1.0;           ///< screenshots: zoom relative to "fit", about the ray being traced
     bool largeFonts = false;
     bool sceneGiven = false;

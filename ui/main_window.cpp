@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include <cmath>
+#include <limits>
 
 #include <QAction>
 #include <QApplication>
@@ -11,6 +12,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSlider>
@@ -59,6 +61,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(&controller_, &SessionController::finished, this, [this](bool completed) {
         statusBar()->showMessage(completed ? "run finished" : "run cancelled", 5000);
+        // Next miss / Next deferral: the ray in focus is the one they stopped on
+        if (const SessionState* s = controller_.state(); s && s->stopEvent() >= 0) selectEvent(s->stopEvent());
     });
     playTimer_.setInterval(33);
     connect(&playTimer_, &QTimer::timeout, this, &MainWindow::onPlayTick);
@@ -106,6 +110,14 @@ void MainWindow::buildToolbars() {
     render->addWidget(orderBox_);
     connect(orderBox_, &QComboBox::activated, this, [this](int i) { setOrder(rc::OrderKind(orderBox_->itemData(i).toInt())); });
 
+    accelBox_ = new QComboBox(this);
+    for (auto k : {rc::AccelKind::Linear, rc::AccelKind::Grid, rc::AccelKind::Bvh})
+        accelBox_->addItem(text(rc::toString(k)), int(k));
+    accelBox_->setToolTip("What answers the complete searches: a linear scan, a uniform grid or a BVH");
+    render->addWidget(new QLabel(" Search ", this));
+    render->addWidget(accelBox_);
+    connect(accelBox_, &QComboBox::activated, this, [this](int i) { setAccel(rc::AccelKind(accelBox_->itemData(i).toInt())); });
+
     sizeBox_ = new QComboBox(this);
     sizeBox_->addItem("scene's", 0);
     for (int n : {32, 64, 128, 256, 512, 1024}) sizeBox_->addItem(QString::number(n), n);
@@ -128,6 +140,19 @@ void MainWindow::buildToolbars() {
     stepPixelAct_->setToolTip("Trace until a ray of another pixel is traced");
     nextMissAct_ = step->addAction("Next miss", this, &MainWindow::runToNextMiss);
     nextMissAct_->setShortcut(Qt::Key_M);
+    nextMissAct_->setToolTip("Trace until a cache miss, and focus on it (M)");
+    nextDeferralAct_ = step->addAction("Next deferral", this, &MainWindow::runToNextDeferral);
+    nextDeferralAct_->setShortcut(Qt::Key_D);
+    nextDeferralAct_->setToolTip("Trace until a ray is deferred (its cheap test failed), and focus on it (D)");
+    goToAct_ = step->addAction("Go to step…", this, [this] {
+        const SessionState* s = controller_.state();
+        if (!s) return;
+        bool ok = false;
+        const qint64 n = QInputDialog::getInt(this, "Go to step", "Step:", int(s->session().steps()), 0,
+                                              std::numeric_limits<int>::max(), 1, &ok);
+        if (ok) goToStep(n);
+    });
+    goToAct_->setShortcut(Qt::CTRL | Qt::Key_G);
     backAct_ = step->addAction("Step back", this, &MainWindow::stepBack);
     backAct_->setShortcut(Qt::Key_Backspace);
     backAct_->setToolTip("Rebuild and replay to one step before (the core is deterministic)");
@@ -214,18 +239,8 @@ void MainWindow::buildDocks() {
     log->raise();
     resizeDocks({rt}, {520}, Qt::Horizontal);
     resizeDocks({log}, {180}, Qt::Vertical);
-    connect(rayTree_, &RayTreePanel::rayChosen, this, [this](int event) {
-        selection_.event = event;
-        view_->update();
-    });
-    connect(eventLog_, &EventLogPanel::eventChosen, this, [this](int event) {
-        const SessionState* s = controller_.state();
-        if (!s) return;
-        const int pixel = s->recorder().events()[event].pixel;
-        selectPixel(pixel % s->width(), pixel / s->width());
-        selection_.event = event;
-        view_->update();
-    });
+    connect(rayTree_, &RayTreePanel::rayChosen, this, &MainWindow::selectEvent);
+    connect(eventLog_, &EventLogPanel::eventChosen, this, &MainWindow::selectEvent);
     connect(objects_, &ObjectsPanel::objectChosen, this, &MainWindow::selectObject);
 }
 
@@ -268,6 +283,43 @@ void MainWindow::setCache(rc::CacheKind k) {
     resetSession();
 }
 
+void MainWindow::setAccel(rc::AccelKind k) {
+    options_.accel = k;
+    accelBox_->setCurrentIndex(accelBox_->findData(int(k)));
+    resetSession();
+}
+
+bool MainWindow::selectRay(int x, int y, const QString& path, QString& error) {
+    const SessionState* s = controller_.state();
+    if (!s) {
+        error = "no render to select in";
+        return false;
+    }
+    if (x < 0 || y < 0 || x >= s->width() || y >= s->height()) {
+        error = QString("pixel (%1,%2) is outside the %3x%4 image").arg(x).arg(y).arg(s->width()).arg(s->height());
+        return false;
+    }
+    selectPixel(x, y);
+    if (path.isEmpty()) return true;
+    // Paths are compared without spaces and case: "eye/reflection/shadow1" names "shadow 1"
+    auto norm = [](QString t) { return t.remove(' ').toLower(); };
+    const rc::CacheTree& tree = s->session().cacheTree();
+    QStringList have;
+    int found = -1;
+    for (int i : s->recorder().eventsOf(y * s->width() + x)) {
+        const EventRecord& r = s->recorder().events()[std::size_t(i)];
+        const QString label = QString::fromStdString(tree.label(r.node));
+        if (!have.contains(label)) have << label;
+        if (norm(label) == norm(path) && (found < 0 || !r.deferred())) found = i;
+    }
+    if (found < 0) {
+        error = QString("pixel (%1,%2) has no ray at path '%3'; its rays: %4")
+                    .arg(x).arg(y).arg(path).arg(have.isEmpty() ? QString("none yet") : have.join(", "));
+        return false;
+    }
+    return selectEvent(found);
+}
+
 void MainWindow::setOrder(rc::OrderKind k) {
     options_.order = k;
     orderBox_->setCurrentIndex(orderBox_->findData(int(k)));
@@ -305,7 +357,9 @@ void MainWindow::resetSession() {
 }
 
 void MainWindow::setOverlays(const Overlays& o) {
+    const double lineScale = overlays_.lineScale;
     overlays_ = o;
+    overlays_.lineScale = lineScale;
     const QSignalBlocker b1(cylinderBox_), b2(hullBox_), b3(frontierBox_), b4(missesBox_), b5(gridBox_);
     cylinderBox_->setChecked(o.cylinder);
     hullBox_->setChecked(o.hull);
@@ -323,6 +377,7 @@ void MainWindow::setHeatmap(Heatmap h) {
 }
 
 void MainWindow::setLargeFonts(bool on) {
+    overlays_.lineScale = on ? 1.8 : 1.0;
     QFont f = QApplication::font();
     f.setPointSizeF(on ? 16.0 : 10.0);
     QApplication::setFont(f);
@@ -344,6 +399,17 @@ void MainWindow::selectPixel(int x, int y) {
     view_->update();
 }
 
+bool MainWindow::selectEvent(int event) {
+    const SessionState* s = controller_.state();
+    if (!s || event < 0 || std::size_t(event) >= s->recorder().events().size()) return false;
+    const int pixel = s->recorder().events()[std::size_t(event)].pixel;
+    if (pixel != selection_.pixel) selectPixel(pixel % s->width(), pixel / s->width());
+    selection_.event = event;
+    rayTree_->setCurrentEvent(event);
+    view_->update();
+    return true;
+}
+
 void MainWindow::selectObject(int object) {
     selection_.object = object;
     view_->update();
@@ -352,6 +418,11 @@ void MainWindow::selectObject(int object) {
 void MainWindow::stepRay() { controller_.stepRay(); }
 void MainWindow::stepPixel() { controller_.start(RunGoal::NextPixel); }
 void MainWindow::runToNextMiss() { controller_.start(RunGoal::NextMiss); }
+void MainWindow::runToNextDeferral() { controller_.start(RunGoal::NextDeferral); }
+void MainWindow::goToStep(qint64 step) {
+    setPlaying(false);
+    controller_.goToStep(step);
+}
 void MainWindow::runToEnd() {
     setPlaying(false);
     controller_.start(RunGoal::ToEnd);
@@ -406,9 +477,8 @@ void MainWindow::refresh() {
     // The ray tree follows the selected pixel, else the pixel being traced
     int pixel = selection_.pixel;
     if (pixel < 0 && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
-    const int chosen = selection_.event;
     rayTree_->showPixel(s, pixel);
-    selection_.event = chosen;
+    if (const auto f = RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
     statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
     updateControls();
 }
@@ -427,11 +497,12 @@ void MainWindow::updateControls() {
     const bool busy = controller_.busy();
     const SessionState* s = controller_.state();
     const bool canStep = !busy && s && !s->session().done();
-    for (QAction* a : {stepRayAct_, stepPixelAct_, nextMissAct_, runAct_}) if (a) a->setEnabled(canStep);
+    for (QAction* a : {stepRayAct_, stepPixelAct_, nextMissAct_, nextDeferralAct_, runAct_}) if (a) a->setEnabled(canStep);
+    if (goToAct_) goToAct_->setEnabled(!busy && s);
     if (playAct_) playAct_->setEnabled(canStep || playTimer_.isActive());
     if (backAct_) backAct_->setEnabled(!busy && s && s->session().steps() > 0);
     if (cancelAct_) cancelAct_->setEnabled(busy);
-    for (QWidget* w : std::initializer_list<QWidget*>{sceneBox_, cacheBox_, orderBox_, sizeBox_}) if (w) w->setEnabled(!busy);
+    for (QWidget* w : std::initializer_list<QWidget*>{sceneBox_, cacheBox_, orderBox_, accelBox_, sizeBox_}) if (w) w->setEnabled(!busy);
     if (resetAct_) resetAct_->setEnabled(true);
     if (openAct_) openAct_->setEnabled(!busy);
     // Hide the overlays this cache and order cannot draw: no cache has no cylinder, hull or

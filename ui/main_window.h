@@ -50,6 +50,11 @@ public:
     /// Labels of the overlay boxes offered for the current cache and order.
     QStringList offeredOverlays() const;
     void setOrder(rc::OrderKind k);
+    /// What answers complete searches (linear, grid, bvh).
+    void setAccel(rc::AccelKind k);
+    /// Selects pixel (x, y) and its ray at cache-tree path `path` (empty: its eye ray).
+    /// On a bad pixel or path, says why in `error` and returns false.
+    bool selectRay(int x, int y, const QString& path, QString& error);
     /// Image size; 0 x 0 means the scene's own.
     void setImageSize(int width, int height);
     void setOverlays(const Overlays& o);
@@ -58,10 +63,13 @@ public:
     void setLargeFonts(bool on);
     /// Selects a pixel to inspect (-1, -1 clears).
     void selectPixel(int x, int y);
+    /// Puts recorded event `event` in focus (its pixel selected); false if there is no such event.
+    bool selectEvent(int event);
     void selectObject(int object);
     const Selection& selection() const { return selection_; }
 
     SessionController& controller() { return controller_; }
+    const OverlayPainter& overlayPainter() const { return overlayPainter_; }
     ImageView* imageView() const { return view_; }
     RayTreePanel* rayTreePanel() const { return rayTree_; }
     EventLogPanel* eventLogPanel() const { return eventLog_; }
@@ -72,6 +80,9 @@ public slots:
     void stepRay();
     void stepPixel();
     void runToNextMiss();
+    void runToNextDeferral();
+    /// Moves to step `step`, forwards by tracing, backwards from a checkpoint.
+    void goToStep(qint64 step);
     void runToEnd();
     void stepBack();
     void cancelRun();
@@ -109,7 +120,7 @@ private:
     StatsPanel* stats_ = nullptr;
     EventLogPanel* eventLog_ = nullptr;
     ObjectsPanel* objects_ = nullptr;
-    QComboBox *sceneBox_ = nullptr, *cacheBox_ = nullptr, *orderBox_ = nullptr, *sizeBox_ = nullptr,
+    QComboBox *sceneBox_ = nullptr, *cacheBox_ = nullptr, *orderBox_ = nullptr, *sizeBox_ = nullptr, *accelBox_ = nullptr,
               *heatmapBox_ = nullptr;
     QCheckBox *cylinderBox_ = nullptr, *hullBox_ = nullptr, *frontierBox_ = nullptr, *missesBox_ = nullptr,
               *gridBox_ = nullptr;
@@ -117,6 +128,7 @@ private:
     QAction *cylinderAct_ = nullptr, *hullAct_ = nullptr, *frontierAct_ = nullptr, *missesAct_ = nullptr;
     QSlider* speed_ = nullptr;
     QLabel* speedLabel_ = nullptr;
+    QAction *nextDeferralAct_ = nullptr, *goToAct_ = nullptr;
     QAction *stepRayAct_ = nullptr, *stepPixelAct_ = nullptr, *nextMissAct_ = nullptr, *playAct_ = nullptr,
             *runAct_ = nullptr, *cancelAct_ = nullptr, *resetAct_ = nullptr, *backAct_ = nullptr,
             *openAct_ = nullptr;

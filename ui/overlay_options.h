@@ -27,6 +27,7 @@ struct Overlays {
     bool misses = false;    ///< miss markers coloured by reason
     bool grid = true;       ///< pixel grid at high zoom
     bool legend = true;     ///< the colour key
+    double lineScale = 1.0; ///< line width factor (Large fonts draw thicker lines)
 
     /// Parses "cylinder,cone,frontier,misses" (also "hull", "grid", "all", "none").
     static std::optional<Overlays> parse(const QString& list);

@@ -24,17 +24,31 @@ QColor withAlpha(QColor c, int a) {
     return c;
 }
 
-// Draws a closed outline twice: a dark halo, then the colour, so it reads on any image
+// Draws a closed outline twice: a dark halo, then the colour, so it reads on any image.
+// An outline holding the whole view has no edge to show: it is only tinted.
 void outline(QPainter& p, const QPolygonF& poly, const QColor& c, double width,
-             Qt::PenStyle style = Qt::SolidLine, const QColor& fill = Qt::transparent) {
+             Qt::PenStyle style = Qt::SolidLine, const QColor& fill = Qt::transparent,
+             PaintWork* work = nullptr, bool covers = false) {
     if (poly.size() < 2) return;
+    if (work) {
+        ++work->outlines;
+        work->vertices += int(poly.size());
+        const double scale = std::sqrt(std::abs(p.transform().determinant()));
+        for (int i = 0; i < poly.size(); ++i) {
+            const QPointF& a = poly[i];
+            work->maxCoord = std::max({work->maxCoord, std::abs(a.x()), std::abs(a.y())});
+            work->length += QLineF(a, poly[(i + 1) % poly.size()]).length() * scale;
+        }
+        if (covers) ++work->covering;
+    }
     p.setBrush(Qt::NoBrush);
     if (fill.alpha() > 0) {
         p.setPen(Qt::NoPen);
-        p.setBrush(fill);
+        p.setBrush(covers ? withAlpha(fill, std::min(fill.alpha(), 25)) : fill);
         p.drawPolygon(poly);
         p.setBrush(Qt::NoBrush);
     }
+    if (covers) return;
     p.setPen(cosmetic(QColor(0, 0, 0, 160), width + 2.0));
     p.drawPolygon(poly);
     p.setPen(cosmetic(c, width, style));
@@ -57,19 +71,26 @@ QPointF pixelCentre(int pixel, int width) {
 void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
                            double scale) {
     p.setRenderHint(QPainter::Antialiasing, true);
-    const Projector proj(s.scene().camera, s.camera());
+    work_ = {};
+    lineScale_ = o.lineScale;
+    Projector proj(s.scene().camera, s.camera());
+    // Everything is clipped to what the widget shows, with a margin so that cut edges
+    // stay off screen: no outline is longer than a few times the view's perimeter
+    const QRectF device = p.viewport();
+    const QRectF visible = p.transform().inverted().mapRect(device);
+    const double mx = visible.width() * 0.05 + 1.0, my = visible.height() * 0.05 + 1.0;
+    proj.setClip(visible.adjusted(-mx, -my, mx, my));
     if (o.frontier) paintFrontier(p, s, scale, false);
-    if (o.misses) paintMisses(p, s, scale);
+    if (o.misses) paintMisses(p, s, scale, sel);
     if (sel.object >= 0 && sel.object < s.scene().size())
         paintObject(p, s, proj, sel.object, palette::kSelection, withAlpha(palette::kSelection, 70), 3.0);
-    if (auto f = RayFocus::ofCurrent(s)) paintFocus(p, s, proj, *f, o);
+    // One ray in focus: the selected one, else the one being traced
+    if (auto f = RayFocus::of(s, sel)) paintFocus(p, s, proj, *f, o);
     if (sel.pixel >= 0 && sel.pixel < s.width() * s.height()) {
-        int index = sel.event;
-        if (index < 0) index = s.recorder().eventAt(sel.pixel, 0);
-        if (index >= 0) paintFocus(p, s, proj, RayFocus::ofEvent(s, index), o);
         const QPointF c = pixelCentre(sel.pixel, s.width());
         const double half = std::max(0.5, 7.0 / scale);
-        outline(p, QPolygonF(QRectF(c.x() - half, c.y() - half, 2 * half, 2 * half)), palette::kSelection, 2.5);
+        outline(p, QPolygonF(QRectF(c.x() - half, c.y() - half, 2 * half, 2 * half)), palette::kSelection,
+                2.5 * lineScale_);
     }
     // The queue on top of everything: it is small and it is where the action is
     if (o.frontier) paintFrontier(p, s, scale, true);
@@ -82,7 +103,7 @@ void OverlayPainter::paintFocus(QPainter& p, const SessionState& s, const Projec
     if (!(o.hull || o.cylinder)) return;
     // The ray itself: from its origin to the end of its segment, and its pixel
     if (auto l = proj.segment(f.ray.o, f.segmentEnd(s.scene())); l && l->length() > 0.5)
-        line(p, *l, palette::kRay, 2.5);
+        line(p, *l, palette::kRay, 2.5 * lineScale_);
     const QPointF c = pixelCentre(f.pixel, s.width());
     p.setPen(cosmetic(Qt::black, 2.0));
     p.setBrush(palette::kRay);
@@ -106,10 +127,10 @@ void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Pro
     if (!cached) cyl = cylinderAround(s.scene(), f);
     if (!(cyl.radius > 0.0)) return;
     const QPolygonF shape = proj.hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius});
-    outline(p, shape, palette::kCylinder, cached ? 2.5 : 2.0, cached ? Qt::SolidLine : Qt::DashLine,
-            withAlpha(palette::kCylinder, cached ? 60 : 35));
+    outline(p, shape, palette::kCylinder, (cached ? 2.5 : 2.0) * lineScale_, cached ? Qt::SolidLine : Qt::DashLine,
+            withAlpha(palette::kCylinder, cached ? 60 : 35), &work_, proj.covers(shape));
     if (auto l = proj.segment(cyl.a, cyl.b); l && l->length() > 0.5)
-        line(p, *l, palette::kCylinder, 1.5, Qt::DashLine);
+        line(p, *l, palette::kCylinder, 1.5 * lineScale_, Qt::DashLine);
 }
 
 void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
@@ -135,7 +156,9 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
     }
     // An eye ray that hit nothing: the cone of eye rays known to hit nothing either
     if (coneAngle >= 0.0) {
-        outline(p, proj.eyeCone(coneAxis, coneAngle), palette::kHull, 2.5, Qt::DashLine, withAlpha(palette::kHull, 30));
+        const QPolygonF cone = proj.eyeCone(coneAxis, coneAngle);
+        outline(p, cone, palette::kHull, 2.5 * lineScale_, Qt::DashLine, withAlpha(palette::kHull, 30), &work_,
+                proj.covers(cone));
         if (auto c = proj.point(proj.eye() + coneAxis)) {
             p.setPen(cosmetic(palette::kHull, 2.0));
             const double r = 4.0 / std::sqrt(std::abs(p.transform().determinant()));
@@ -143,13 +166,20 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
             p.drawLine(*c - QPointF(r, -r), *c + QPointF(r, -r));
         }
     }
-    const rc::Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
-    outline(p, proj.hull(a, b), palette::kHull, 2.5, Qt::SolidLine, withAlpha(palette::kHull, 45));
-    outline(p, proj.silhouette(a), palette::kOrigin, 1.5, Qt::DashLine);
+    // No target (a ray that hit nothing) or no entry yet: there is no hull to draw
     const rc::Scene& scene = s.scene();
+    const int sites = scene.size() + 1 + int(scene.lights.size());
+    if (origin < 0 || target < 0 || origin >= sites || target >= sites) return;
+    const rc::Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
+    const QPolygonF shape = proj.hull(a, b);
+    outline(p, shape, palette::kHull, 2.5 * lineScale_, Qt::SolidLine, withAlpha(palette::kHull, 45), &work_,
+            proj.covers(shape));
+    const QPolygonF from = proj.silhouette(a);
+    outline(p, from, palette::kOrigin, 1.5 * lineScale_, Qt::DashLine, Qt::transparent, &work_, proj.covers(from));
     if (const std::vector<int>* blockers = lists->find(origin, target))
         for (int id : *blockers)
-            paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 80), 3.0);
+            if (id >= 0 && id < scene.size())
+                paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 80), 3.0);
     if (target < scene.size()) {
         paintObject(p, s, proj, target, palette::kTarget, withAlpha(palette::kTarget, 40), 3.0);
     } else if (auto c = proj.point(b.c)) {
@@ -166,12 +196,16 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
 void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Projector& proj, int object,
                                  const QColor& lineColor, const QColor& fill, double width) {
     const rc::Scene& scene = s.scene();
+    if (object < 0 || object >= scene.size()) return;
     const rc::Object& obj = scene.objects[object];
     // Polygons (ground planes) may cover the whole view: outline only, no tint
-    if (obj.shape == rc::Shape::Polygon)
-        outline(p, proj.polygon(scene.polygons[obj.index]), lineColor, width, Qt::DashLine);
-    else
-        outline(p, proj.silhouette(obj.bound), lineColor, width, Qt::SolidLine, fill);
+    if (obj.shape == rc::Shape::Polygon) {
+        const QPolygonF poly = proj.polygon(scene.polygons[obj.index]);
+        outline(p, poly, lineColor, width * lineScale_, Qt::DashLine, Qt::transparent, &work_, proj.covers(poly));
+    } else {
+        const QPolygonF sil = proj.silhouette(obj.bound);
+        outline(p, sil, lineColor, width * lineScale_, Qt::SolidLine, fill, &work_, proj.covers(sil));
+    }
 }
 
 void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers) {
@@ -180,7 +214,7 @@ void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double sc
     const int w = s.width(), h = s.height();
     // Regions of the path being filled: finished ones tinted, the current one bright
     if (!markers && f.path >= 0) {
-        if (cachedState_ != &s || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
+        if (cachedState_ != s.serial() || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             regions_.fill(Qt::transparent);
             for (int px = 0; px < w * h; ++px) {
@@ -190,7 +224,7 @@ void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double sc
                 const QColor c = region == f.region ? withAlpha(palette::kRegion, 150) : palette::label(region, 95);
                 regions_.setPixelColor(px % w, px / w, QColor::fromRgba(qPremultiply(c.rgba())));
             }
-            cachedState_ = &s;
+            cachedState_ = s.serial();
             cachedEvents_ = rec.events().size();
             cachedPath_ = f.path;
         }
@@ -211,11 +245,12 @@ void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double sc
     for (int px : f.queued) mark(px, palette::kQueued);
 }
 
-void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scale) {
-    // Misses at the path of the ray being traced (eye, eye/reflection, ...), by reason
+void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scale, const Selection& sel) {
+    // Misses at the path of the ray in focus (eye, eye/reflection, ...), by reason
     const TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height();
-    const int path = rec.lastEvent() ? rec.lastEvent()->task.node : 0;
+    const auto focus = RayFocus::of(s, sel);
+    const int path = focus ? focus->node : 0;
     std::array<QVector<QPointF>, rc::kMissReasons> points;
     for (int px = 0; px < w * h; ++px) {
         const int i = rec.eventAt(px, path);
@@ -233,7 +268,6 @@ void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scal
 
 void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
                                  const QRectF& area) {
-    (void)sel;
     QStringList caption;
     std::vector<std::pair<QColor, QString>> keys;
     const rc::RenderSession& session = s.session();
@@ -243,19 +277,24 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                    .arg(QString::fromUtf8(rc::toString(session.order().kind()).data()))
                    .arg(QString("%1x%2").arg(s.width()).arg(s.height()))
                    .arg(session.steps());
-    if (auto f = RayFocus::ofCurrent(s)) {
-        const auto& e = *s.recorder().lastEvent();
-        QString d = QString::fromUtf8(rc::toString(e.lookup.decision).data());
-        if (e.lookup.reason != rc::MissReason::None)
-            d += QString(" (%1)").arg(QString::fromUtf8(rc::toString(e.lookup.reason).data()));
-        if (e.deferred) d = "deferred: " + d;
-        caption << QString("ray: pixel (%1,%2)  %3  hit %4  %5  %6 tests")
-                       .arg(f->pixel % s.width()).arg(f->pixel / s.width())
-                       .arg(QString::fromStdString(session.cacheTree().label(f->node)))
-                       .arg(f->hit >= 0 ? QString("#%1").arg(f->hit) : QString("nothing"))
-                       .arg(d).arg(e.tests);
+    const auto focus = RayFocus::of(s, sel);
+    if (focus) {
+        const RayFocus& f = *focus;
+        QString d = QString::fromUtf8(rc::toString(f.decision).data());
+        if (f.reason != rc::MissReason::None)
+            d += QString(" (%1)").arg(QString::fromUtf8(rc::toString(f.reason).data()));
+        if (f.deferred) d = "deferred: " + d;
+        caption << QString("%1 pixel (%2,%3)  %4  hit %5  %6  %7 tests")
+                       .arg(f.selected ? "selected:" : "ray:")
+                       .arg(f.pixel % s.width()).arg(f.pixel / s.width())
+                       .arg(QString::fromStdString(session.cacheTree().label(f.node)))
+                       .arg(f.deferred ? QString("?") : f.hit >= 0 ? QString("#%1").arg(f.hit) : QString("nothing"))
+                       .arg(d).arg(f.tests);
+    } else if (sel.pixel >= 0) {
+        caption << QString("selected pixel (%1,%2): not traced yet").arg(sel.pixel % s.width()).arg(sel.pixel / s.width());
     }
-    if (o.hull || o.cylinder) keys.push_back({palette::kRay, "ray being traced"});
+    if (o.hull || o.cylinder)
+        keys.push_back({palette::kRay, focus && focus->selected ? "selected ray" : "ray being traced"});
     if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
     if (o.hull) {
         if (session.strategy().blockerLists()) {
@@ -282,7 +321,7 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     if (o.misses) {
         // Counted over every path; the marks show the path of the ray being traced
         const rc::Counters& n = session.counters();
-        const int path = s.recorder().lastEvent() ? s.recorder().lastEvent()->task.node : 0;
+        const int path = focus ? focus->node : 0;
         keys.push_back({Qt::transparent, QString("misses marked at path %1; all paths:")
                                              .arg(QString::fromStdString(session.cacheTree().label(path)))});
         for (int r = 1; r < rc::kMissReasons; ++r)

@@ -12,11 +12,14 @@ namespace rcgui {
 
 class Projector;
 
-/// What is selected in the window.
-struct Selection {
-    int pixel = -1;      ///< selected pixel, -1 for none
-    int event = -1;      ///< its ray chosen in the ray tree (index into the recorder), -1: its eye ray
-    int object = -1;     ///< object highlighted from the objects panel, -1 for none
+/// How much an overlay paint drew (outlines in widget pixels): a deterministic measure
+/// of its cost, read by the stall probe in the tests.
+struct PaintWork {
+    int outlines = 0;     ///< closed outlines drawn
+    int vertices = 0;     ///< their vertices
+    int covering = 0;     ///< outlines that held the whole view (tinted, not stroked)
+    double maxCoord = 0;  ///< largest |coordinate| of a vertex, in image units
+    double length = 0;    ///< total outline length, in widget pixels
 };
 
 /// Paints overlays for one SessionState. Keeps a few per-pixel layers cached between
@@ -38,9 +41,16 @@ private:
     void paintObject(QPainter& p, const SessionState& s, const Projector& proj, int object,
                      const QColor& line, const QColor& fill, double width);
     void paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers);
-    void paintMisses(QPainter& p, const SessionState& s, double scale);
+    void paintMisses(QPainter& p, const SessionState& s, double scale, const Selection& sel);
 
-    const SessionState* cachedState_ = nullptr;
+public:
+    /// What the last paint() drew.
+    const PaintWork& lastWork() const { return work_; }
+
+private:
+    PaintWork work_;
+    double lineScale_ = 1.0;
+    std::uint64_t cachedState_ = 0;  ///< SessionState::serial() of the cached layer
     std::size_t cachedEvents_ = 0;
     int cachedPath_ = -1;
     QImage regions_;

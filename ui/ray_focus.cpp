@@ -21,6 +21,10 @@ std::optional<RayFocus> RayFocus::ofCurrent(const SessionState& s) {
     if (!e) return std::nullopt;
     RayFocus f;
     const rc::Query& q = e->task.query;
+    f.event = int(s.recorder().events().size()) - 1;
+    f.decision = e->lookup.decision;
+    f.reason = e->lookup.reason;
+    f.tests = int(e->tests);
     f.pixel = e->task.pixel;
     f.node = e->task.node;
     f.kind = q.kind;
@@ -35,9 +39,18 @@ std::optional<RayFocus> RayFocus::ofCurrent(const SessionState& s) {
     return f;
 }
 
-RayFocus RayFocus::ofEvent(const SessionState& s, int index) {
-    const EventRecord& r = s.recorder().events()[index];
+std::optional<RayFocus> RayFocus::ofEvent(const SessionState& s, int index) {
+    const auto& events = s.recorder().events();
+    if (index < 0 || std::size_t(index) >= events.size()) return std::nullopt;
+    // The newest event is the one being traced: its full-precision copy, and its entry
+    if (std::size_t(index) + 1 == events.size())
+        if (auto f = ofCurrent(s)) return f;
+    const EventRecord& r = events[std::size_t(index)];
     RayFocus f;
+    f.event = index;
+    f.decision = r.rayDecision();
+    f.reason = r.missReason();
+    f.tests = r.tests;
     f.pixel = r.pixel;
     f.node = r.node;
     f.kind = r.rayKind();
@@ -48,6 +61,20 @@ RayFocus RayFocus::ofEvent(const SessionState& s, int index) {
     f.t = r.t;
     f.tmax = r.tmax;
     f.deferred = r.deferred();
+    return f;
+}
+
+std::optional<RayFocus> RayFocus::of(const SessionState& s, const Selection& sel) {
+    std::optional<RayFocus> f;
+    if (sel.event >= 0) {
+        f = ofEvent(s, sel.event);
+    } else if (sel.pixel >= 0) {
+        if (sel.pixel < s.width() * s.height()) f = ofEvent(s, s.recorder().eventAt(sel.pixel, 0));
+    } else {
+        f = ofCurrent(s);
+        return f;
+    }
+    if (f) f->selected = true;
     return f;
 }
 

@@ -8,8 +8,17 @@
 
 namespace rcgui {
 
+/// What is selected in the window.
+struct Selection {
+    int pixel = -1;      ///< selected pixel, -1 for none
+    int event = -1;      ///< its ray chosen in the ray tree (index into the recorder), -1: its eye ray
+    int object = -1;     ///< object highlighted from the objects panel, -1 for none
+};
+
 /// One ray, with what the overlays need to know about it.
 struct RayFocus {
+    int event = -1;       ///< index of its record in the recorder
+
     int pixel = 0;
     int node = 0;         ///< ray-tree path
     rc::RayKind kind = rc::RayKind::Primary;
@@ -21,14 +30,22 @@ struct RayFocus {
     double tmax = -1.0;   ///< shadow rays: distance to the light
     bool current = false; ///< the ray being traced (its path's cache entry is the active one)
     bool deferred = false;
+    bool selected = false; ///< chosen by the user (else the ray being traced)
+    rc::Decision decision = rc::Decision::Uncached;
+    rc::MissReason reason = rc::MissReason::None;
+    int tests = 0;
 
     /// Where the ray's segment ends: its hit, its light, or where it leaves the scene.
     rc::Vec3 segmentEnd(const rc::Scene& scene) const;
 
     /// The ray of the last trace event, if any.
     static std::optional<RayFocus> ofCurrent(const SessionState& s);
-    /// The ray of recorded event `index`.
-    static RayFocus ofEvent(const SessionState& s, int index);
+    /// The ray of recorded event `index`; nothing when there is no such event.
+    static std::optional<RayFocus> ofEvent(const SessionState& s, int index);
+    /// The ray in focus (the rule every view follows): the ray chosen in the ray tree or
+    /// event log, else the eye ray of the selected pixel (nothing while it is untraced),
+    /// else the ray being traced.
+    static std::optional<RayFocus> of(const SessionState& s, const Selection& sel);
 };
 
 /// The Speer-DeRose-Barsky cylinder of safety around a ray's segment: the largest

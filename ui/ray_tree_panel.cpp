@@ -3,6 +3,7 @@
 #include <map>
 
 #include <QHeaderView>
+#include <QTreeWidgetItemIterator>
 
 #include "labels.h"
 
@@ -41,6 +42,20 @@ void RayTreePanel::showPixel(const SessionState* state, int pixel) {
         if (!r.deferred()) byNode[r.node] = item;
     }
     expandAll();
+}
+
+}  // namespace rcgui
+
+namespace rcgui {
+
+void RayTreePanel::setCurrentEvent(int event) {
+    const QSignalBlocker block(this);
+    for (QTreeWidgetItemIterator it(this); *it; ++it)
+        if ((*it)->data(0, Qt::UserRole).toInt() == event) {
+            setCurrentItem(*it);
+            scrollToItem(*it);
+            return;
+        }
 }
 
 }  // namespace rcgui

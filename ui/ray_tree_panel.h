@@ -16,6 +16,8 @@ public:
     /// Shows the rays of `pixel` (-1: clear). `state` may be null (a worker is running).
     void showPixel(const SessionState* state, int pixel);
     int pixel() const { return pixel_; }
+    /// Marks the row of recorded event `event` as current (no rayChosen signal).
+    void setCurrentEvent(int event);
 
 signals:
     /// A ray was chosen: the index of its event in the recorder.

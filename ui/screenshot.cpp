@@ -20,6 +20,7 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
     // Choose everything first, then load: one session is built, with these choices
     w.setCache(o.cache);
     w.setOrder(o.order);
+    w.setAccel(o.accel);
     if (o.width > 0 || o.height > 0) w.setImageSize(o.width, o.height);
     if (!w.loadScene(o.scene) || !ok) {
         w.setErrorReporter([&err](const QString&, const QString& message) { err << message << Qt::endl; });
@@ -30,7 +31,14 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
     }
     w.setHeatmap(o.heatmap);
     w.refresh();
-    if (o.select.x() >= 0) w.selectPixel(o.select.x(), o.select.y());
+    if (o.select.x() >= 0) {
+        QString why;
+        if (!w.selectRay(o.select.x(), o.select.y(), o.selectPath, why)) {
+            err << "raycache-gui: --select: " << why << Qt::endl;
+            w.setErrorReporter([&err](const QString&, const QString& message) { err << message << Qt::endl; });
+            return false;
+        }
+    }
     // `ok` dies with this call: later errors only go to the stream
     w.setErrorReporter([&err](const QString& title, const QString& message) {
         err << "raycache-gui: " << title.toLower() << ": " << message << Qt::endl;

@@ -45,7 +45,8 @@ bool SessionController::start(RunGoal goal, std::int64_t target) {
     cancel_ = false;
     emit busyChanged(true);
     SessionState* s = state_.get();
-    worker_ = QThread::create([this, s, goal, target] {
+    const std::uint64_t run = ++run_;
+    worker_ = QThread::create([this, s, goal, target, run] {
         const bool ok = s->runUntil(goal, target, &cancel_, [this, s] {
             // The worker owns the state: it alone may read it, so it makes the snapshot
             const QImage img = imageOf(*s);
@@ -55,7 +56,11 @@ bool SessionController::start(RunGoal goal, std::int64_t target) {
                 if (busy_) emit snapshot(img, steps, progress);
             }, Qt::QueuedConnection);
         });
-        QMetaObject::invokeMethod(this, [this, ok] { onWorkerDone(ok); }, Qt::QueuedConnection);
+        workerResult_ = ok;
+        // The hand-back; wait() may have taken it already (then run_ has moved on or busy_ is off)
+        QMetaObject::invokeMethod(this, [this, ok, run] {
+            if (busy_ && run == run_) onWorkerDone(ok);
+        }, Qt::QueuedConnection);
     });
     worker_->start();
     return true;
@@ -65,19 +70,28 @@ bool SessionController::stepBack() {
     if (busy_ || !state_) return false;
     const std::int64_t target = state_->session().steps() - 1;
     if (target < 0) return false;
-    state_ = std::make_unique<SessionState>(state_->config());
-    return start(RunGoal::ToStep, target);
+    return goToStep(target);
+}
+
+bool SessionController::goToStep(std::int64_t step) {
+    if (busy_ || !state_ || step < 0) return false;
+    if (step < state_->session().steps()) {
+        // Backwards: the core is deterministic, so a fresh render replayed to `step` is
+        // the render as it was at that step
+        state_ = std::make_unique<SessionState>(state_->config());
+        emit changed();
+    }
+    return start(RunGoal::ToStep, step);
 }
 
 void SessionController::cancel() { cancel_ = true; }
 
 void SessionController::wait() {
-    while (busy_) {
-        if (worker_) worker_->wait();
-        // The worker's hand-back is a queued call: deliver it
-        QCoreApplication::sendPostedEvents(this);
-        QCoreApplication::processEvents();
-    }
+    // No event loop here: spinning one would run the user's clicks (and this very call
+    // again) in the middle of whatever called wait(). The worker's result is read directly.
+    if (!busy_ || !worker_) return;
+    worker_->wait();
+    onWorkerDone(workerResult_.load());
 }
 
 void SessionController::onWorkerDone(bool completed) {

@@ -36,9 +36,12 @@ public:
     /// Rebuilds the render and replays it to one step before the current one, on the
     /// worker: the core is deterministic, so the state is the one of that step.
     bool stepBack();
+    /// Runs forwards to step `step`, or rebuilds and replays to it when it lies behind.
+    bool goToStep(std::int64_t step);
     /// Asks the worker to stop; it hands the state back soon after.
     void cancel();
-    /// Waits until the worker has stopped and the state is back (processes its signals).
+    /// Blocks until the worker has stopped, then takes the state back (emitting
+    /// finished() and changed()). Runs no event loop, so it cannot be re-entered.
     void wait();
 
     /// The image as rgb8 converted to a QImage (the caller must not be racing a worker).
@@ -58,6 +61,8 @@ private:
     std::unique_ptr<SessionState> state_;
     QThread* worker_ = nullptr;
     std::atomic<bool> cancel_{false};
+    std::atomic<bool> workerResult_{false};
+    std::uint64_t run_ = 0;  ///< the run a queued hand-back belongs to
     bool busy_ = false;
 };
 

@@ -10,8 +10,13 @@ std::unique_ptr<rc::RenderSession> makeSession(const SessionConfig& c) {
 }
 }  // namespace
 
+namespace {
+std::atomic<std::uint64_t> nextSerial{1};
+}  // namespace
+
 SessionState::SessionState(SessionConfig config)
-    : config_(std::move(config)),
+    : serial_(nextSerial++),
+      config_(std::move(config)),
       session_(makeSession(config_)),
       camera_(config_.scene->camera, session_->width(), session_->height()),
       recorder_(session_->width(), session_->height(), &session_->order()),
@@ -43,14 +48,22 @@ bool SessionState::runUntil(RunGoal goal, std::int64_t target, const std::atomic
     auto nextTick = Clock::now() + std::chrono::milliseconds(50);
     const int startPixel = recorder_.lastCommitted() ? recorder_.lastCommitted()->task.pixel : -1;
     std::size_t eventsBefore = recorder_.events().size();
+    stopEvent_ = -1;
     for (std::int64_t n = 0;; ++n) {
         if (goal == RunGoal::ToStep && session_->steps() >= target) return true;
         if (cancel && cancel->load(std::memory_order_relaxed)) return false;
         if (!step()) return true;
         const auto& events = recorder_.events();
-        if (goal == RunGoal::NextMiss) {
-            for (std::size_t i = eventsBefore; i < events.size(); ++i)
-                if (events[i].deferred() || events[i].rayDecision() == rc::Decision::Miss) return true;
+        if (goal == RunGoal::NextMiss || goal == RunGoal::NextDeferral) {
+            for (std::size_t i = eventsBefore; i < events.size(); ++i) {
+                const bool met = goal == RunGoal::NextDeferral
+                                     ? events[i].deferred()
+                                     : !events[i].deferred() && events[i].rayDecision() == rc::Decision::Miss;
+                if (met) {
+                    stopEvent_ = int(i);
+                    return true;
+                }
+            }
             eventsBefore = events.size();
         }
         if (goal == RunGoal::NextPixel && recorder_.lastCommitted()->task.pixel != startPixel)

@@ -22,7 +22,8 @@ struct SessionConfig {
 enum class RunGoal {
     ToEnd,      ///< until the image is complete
     ToStep,     ///< until session().steps() reaches a target
-    NextMiss,   ///< until a committed cache miss or a deferral (the cheap test failed)
+    NextMiss,   ///< until a committed cache miss (stopEvent() is the miss)
+    NextDeferral, ///< until a ray is deferred: its cheap test failed (stopEvent() is the deferral)
     NextPixel,  ///< until a ray of another pixel than the last one is traced
 };
 
@@ -43,6 +44,9 @@ public:
     bool runUntil(RunGoal goal, std::int64_t target, const std::atomic<bool>* cancel = nullptr,
                   const std::function<void()>& tick = {});
 
+    /// The recorded event that met the last run's NextMiss/NextDeferral goal, else -1.
+    int stopEvent() const { return stopEvent_; }
+
     const SessionConfig& config() const { return config_; }
     const rc::Scene& scene() const { return *config_.scene; }
     const rc::RenderSession& session() const { return *session_; }
@@ -52,8 +56,13 @@ public:
     const rc::RayGenerator& camera() const { return camera_; }
     int width() const { return session_->width(); }
     int height() const { return session_->height(); }
+    /// A number no other SessionState of this process has: caches of derived pictures
+    /// key on it (an address may be reused by the next state, e.g. after Step back).
+    std::uint64_t serial() const { return serial_; }
 
 private:
+    std::uint64_t serial_;
+    int stopEvent_ = -1;
     void sample();
     SessionConfig config_;
     std::unique_ptr<rc::RenderSession> session_;

@@ -126,12 +126,36 @@ TEST_CASE("Step pixel stops on the first ray of another pixel", "[gui][step]") {
     for (std::size_t i = 0; i + 1 < events.size(); ++i) REQUIRE(events[i].pixel == first);
 }
 
-TEST_CASE("Run to next miss stops on a miss", "[gui][step]") {
+TEST_CASE("Next miss stops on a committed miss and puts it in focus; Next deferral on a deferral", "[gui][step][focus]") {
     Fixture f;
     f.w.runToNextMiss();
     f.w.controller().wait();
-    const EventRecord& last = f.state().recorder().events().back();
-    REQUIRE((last.deferred() || last.rayDecision() == rc::Decision::Miss));
+    const int miss = f.state().stopEvent();
+    REQUIRE(miss >= 0);
+    const EventRecord& m = f.state().recorder().events()[std::size_t(miss)];
+    REQUIRE_FALSE(m.deferred());
+    REQUIRE(m.rayDecision() == rc::Decision::Miss);
+    REQUIRE(m.missReason() != rc::MissReason::None);
+    // No committed miss before it
+    for (int i = 0; i < miss; ++i) {
+        const EventRecord& r = f.state().recorder().events()[std::size_t(i)];
+        REQUIRE((r.deferred() || r.rayDecision() != rc::Decision::Miss));
+    }
+    auto focus = RayFocus::of(f.state(), f.w.selection());
+    REQUIRE(focus);
+    REQUIRE(focus->event == miss);
+    REQUIRE(focus->decision == rc::Decision::Miss);
+    REQUIRE(focus->reason == m.missReason());
+
+    f.w.runToNextDeferral();
+    f.w.controller().wait();
+    const int deferral = f.state().stopEvent();
+    REQUIRE(deferral > miss);
+    REQUIRE(f.state().recorder().events()[std::size_t(deferral)].deferred());
+    focus = RayFocus::of(f.state(), f.w.selection());
+    REQUIRE(focus);
+    REQUIRE(focus->event == deferral);
+    REQUIRE(focus->deferred);
 }
 
 TEST_CASE("Step back replays to the previous step", "[gui][step]") {
@@ -270,8 +294,12 @@ TEST_CASE("The frontier overlay marks queued pixels", "[gui][overlay]") {
     f.w.setOverlays(only(&Overlays::frontier));
     const QImage drawn = f.grabView();
     const int w = f.state().width();
-    const int px = fr.queued.back();
+    // The queued pixel farthest from the caption (top left)
+    int px = fr.queued.back();
+    for (int q : fr.queued)
+        if (q % w + q / w > px % w + px / w) px = q;
     const QPointF at = f.w.imageView()->imageToWidget(QPointF(px % w + 0.5, px / w + 0.5));
+    INFO("at " << at.x() << "," << at.y() << " px " << px % w << "," << px / w << " queued " << fr.queued.size());
     REQUIRE(colourDistance(drawn.pixelColor(at.toPoint()), palette::kQueued) < 40);
     REQUIRE(colourDistance(plain.pixelColor(at.toPoint()), palette::kQueued) > 40);
 }
