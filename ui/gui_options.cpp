@@ -5,6 +5,8 @@
 namespace rcgui {
 
 namespace {
+// cube:4 at 512x512, breadth-first: about half the image traced
+constexpr qint64 kFirstImpressionSteps = 150000;
 bool parseInt(const QString& s, int lo, int hi, int& out) {
     bool ok = false;
     const int v = s.toInt(&ok);
@@ -48,6 +50,11 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     if (p.isSet(help)) {
         message = p.helpText();
         return ParseResult::Help;
+    }
+    if (args.size() <= 1) {
+        out.firstImpression = true;
+        out.steps = kFirstImpressionSteps;
+        out.overlays = *Overlays::parse("cylinder,cone,frontier");
     }
     const QStringList pos = p.positionalArguments();
     if (pos.size() > 1) {

@@ -28,6 +28,9 @@ struct GuiOptions {
     double zoom = 1.0;           ///< screenshots: zoom relative to "fit", about the ray being traced
     bool largeFonts = false;
     bool sceneGiven = false;
+    /// No arguments at all: open on a partly traced image with a hit ray in focus, its
+    /// hull, blockers and the frontier shown (the paper at a glance).
+    bool firstImpression = false;
 };
 
 /// The outcome of parsing.

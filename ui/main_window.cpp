@@ -9,6 +9,7 @@
 #include <QWidgetAction>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -30,6 +31,17 @@
 #include "stats_panel.h"
 
 namespace rcgui {
+
+QString scenesFolder() {
+    // RAYCACHE_SCENES overrides; else the folder configured at build time
+    const QString env = qEnvironmentVariable("RAYCACHE_SCENES");
+    if (!env.isEmpty()) return env;
+#ifdef RAYCACHE_SCENES_DIR
+    return QStringLiteral(RAYCACHE_SCENES_DIR);
+#else
+    return {};
+#endif
+}
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle("RayCache — caching and breadth-first search (Hanrahan 1986)");
@@ -80,11 +92,23 @@ void MainWindow::buildToolbars() {
     QToolBar* render = addToolBar("Render");
     render->setObjectName("render");
     sceneBox_ = new QComboBox(this);
+    // Built-ins (cube:N in a few sizes), then every scene of the project's scenes/ folder
     for (const rc::BuiltinInfo& b : rc::builtinScenes()) {
         const QString name = QString::fromStdString(b.name);
-        const QString spec = name.contains(":N") ? QString(name).replace(":N", ":4") : name;
-        sceneBox_->addItem(spec, spec);
-        sceneBox_->setItemData(sceneBox_->count() - 1, QString::fromStdString(b.description), Qt::ToolTipRole);
+        QStringList specs;
+        if (name.contains(":N"))
+            for (int n : {2, 3, 4, 5, 6, 8}) specs << QString(name).replace(":N", QString(":%1").arg(n));
+        else
+            specs << name;
+        for (const QString& spec : specs) {
+            sceneBox_->addItem(spec, spec);
+            sceneBox_->setItemData(sceneBox_->count() - 1, QString::fromStdString(b.description), Qt::ToolTipRole);
+        }
+    }
+    const QDir scenes(scenesFolder());
+    for (const QFileInfo& f : scenes.entryInfoList({"*.nff"}, QDir::Files, QDir::Name)) {
+        sceneBox_->addItem(f.fileName(), f.absoluteFilePath());
+        sceneBox_->setItemData(sceneBox_->count() - 1, f.absoluteFilePath(), Qt::ToolTipRole);
     }
     sceneBox_->setToolTip("Scene: built-ins, or files opened with Open…");
     render->addWidget(new QLabel(" Scene ", this));
@@ -287,6 +311,36 @@ void MainWindow::setAccel(rc::AccelKind k) {
     options_.accel = k;
     accelBox_->setCurrentIndex(accelBox_->findData(int(k)));
     resetSession();
+}
+
+int MainWindow::focusShowcase() {
+    const SessionState* s = controller_.state();
+    if (!s) return -1;
+    const rc::BlockerLists* lists = s->session().strategy().blockerLists();
+    const auto& events = s->recorder().events();
+    // The newest committed reflection ray that hit an object with potential blockers in
+    // the hull between the two (the paper's Figure 2 on screen); else such an eye ray;
+    // failing that, the newest hit
+    int best = -1;
+    for (const bool reflected : {true, false}) {
+        for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i) {
+            const EventRecord& r = events[std::size_t(i)];
+            if (r.deferred() || r.hit < 0) continue;
+            if (reflected != (r.rayKind() == rc::RayKind::Reflection) || (!reflected && r.node != 0)) continue;
+            if (!lists) {
+                best = i;
+                break;
+            }
+            const int origin = r.origin >= 0 ? r.origin : lists->eyeSite();
+            const std::vector<int>* l = lists->find(origin, r.hit);
+            if (l && !l->empty()) best = i;
+        }
+        if (best >= 0) break;
+    }
+    for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i)
+        if (!events[std::size_t(i)].deferred() && events[std::size_t(i)].hit >= 0) best = i;
+    if (best >= 0) selectEvent(best);
+    return best;
 }
 
 bool MainWindow::selectRay(int x, int y, const QString& path, QString& error) {
@@ -515,6 +569,12 @@ void MainWindow::updateControls() {
         if (hullAct_) hullAct_->setVisible(o.cache == rc::CacheKind::Blocker);
         if (frontierAct_) frontierAct_->setVisible(o.order == rc::OrderKind::BreadthFirst);
     }
+}
+
+QStringList MainWindow::sceneChoices() const {
+    QStringList out;
+    for (int i = 0; i < sceneBox_->count(); ++i) out << sceneBox_->itemText(i);
+    return out;
 }
 
 QStringList MainWindow::offeredOverlays() const {

@@ -20,6 +20,10 @@ class QSlider;
 
 namespace rcgui {
 
+/// The folder of NFF scenes the Scene menu lists: $RAYCACHE_SCENES, else the project's
+/// scenes/ as configured at build time.
+QString scenesFolder();
+
 class CacheTreePanel;
 class EventLogPanel;
 class ImageView;
@@ -47,6 +51,8 @@ public:
     /// The scene being rendered (null before the first load).
     const rc::Scene* scene() const { return scene_.get(); }
     void setCache(rc::CacheKind k);
+    /// The Scene menu's entries.
+    QStringList sceneChoices() const;
     /// Labels of the overlay boxes offered for the current cache and order.
     QStringList offeredOverlays() const;
     void setOrder(rc::OrderKind k);
@@ -63,6 +69,9 @@ public:
     void setLargeFonts(bool on);
     /// Selects a pixel to inspect (-1, -1 clears).
     void selectPixel(int x, int y);
+    /// Puts a ray worth showing in focus: the newest eye ray that hit an object whose
+    /// blocker hull holds potential blockers (else the newest hit). Returns its event, or -1.
+    int focusShowcase();
     /// Puts recorded event `event` in focus (its pixel selected); false if there is no such event.
     bool selectEvent(int event);
     void selectObject(int object);

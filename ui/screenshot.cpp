@@ -1,6 +1,7 @@
 #include "screenshot.h"
 
 #include <QApplication>
+#include <QFileInfo>
 #include <QPixmap>
 
 #include "image_view.h"
@@ -31,6 +32,7 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
     }
     w.setHeatmap(o.heatmap);
     w.refresh();
+    if (o.firstImpression) w.focusShowcase();
     if (o.select.x() >= 0) {
         QString why;
         if (!w.selectRay(o.select.x(), o.select.y(), o.selectPath, why)) {
@@ -73,7 +75,7 @@ int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err) {
         return 1;
     }
     const SessionState* s = w.controller().state();
-    out << "raycache-gui: wrote " << opts.screenshot << " (" << opts.scene << ", "
+    out << "raycache-gui: wrote " << QFileInfo(opts.screenshot).absoluteFilePath() << " (" << opts.scene << ", "
         << (s ? s->session().steps() : 0) << " steps, " << shot.width() << "x" << shot.height() << ")" << Qt::endl;
     return 0;
 }

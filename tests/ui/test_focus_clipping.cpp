@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include <QApplication>
+#include <QDir>
+#include <QTextStream>
 #include <QElapsedTimer>
 #include <QTimer>
 
@@ -17,6 +19,7 @@
 #include "projector.h"
 #include "ray_focus.h"
 #include "scene/builtin_scenes.h"
+#include "screenshot.h"
 
 using namespace rcgui;
 
@@ -323,4 +326,61 @@ TEST_CASE("Each render state has its own serial, so derived layers never go stal
     f.w.controller().wait();
     REQUIRE(f.state().session().steps() == 9);
     REQUIRE(f.state().serial() != before);
+}
+
+TEST_CASE("With no arguments the window opens on a partly traced image with a hit ray's hull in focus", "[gui][first]") {
+    GuiOptions o;
+    QString msg;
+    REQUIRE(parseGuiOptions({"raycache-gui"}, o, msg) == ParseResult::Ok);
+    REQUIRE(o.firstImpression);
+    REQUIRE((o.overlays.hull && o.overlays.frontier));
+    GuiOptions given;
+    REQUIRE(parseGuiOptions({"raycache-gui", "pair"}, given, msg) == ParseResult::Ok);
+    REQUIRE_FALSE(given.firstImpression);
+
+    MainWindow w;
+    QString errText;
+    QTextStream err(&errText);
+    REQUIRE(applyOptions(w, o, err));
+    const SessionState* s = w.controller().state();
+    REQUIRE(s != nullptr);
+    // Partly traced: some pixels visited, not all
+    int visited = 0;
+    for (int px = 0; px < s->width() * s->height(); ++px) visited += s->recorder().firstVisit(px) >= 0;
+    REQUIRE(visited > s->width() * s->height() / 5);
+    REQUIRE(visited < s->width() * s->height());
+    // A hit ray in focus whose hull holds potential blockers
+    const auto f = RayFocus::of(*s, w.selection());
+    REQUIRE(f);
+    REQUIRE(f->selected);
+    REQUIRE(f->hit >= 0);
+    const rc::BlockerLists* lists = s->session().strategy().blockerLists();
+    REQUIRE(lists != nullptr);
+    const std::vector<int>* blockers = lists->find(lists->originSite(f->origin), f->hit);
+    REQUIRE(blockers != nullptr);
+    REQUIRE_FALSE(blockers->empty());
+}
+
+TEST_CASE("The Scene menu lists cube:N sizes and every scene in scenes/", "[gui][scene]") {
+    MainWindow w;
+    const QStringList choices = w.sceneChoices();
+    for (const char* c : {"cube:2", "cube:4", "cube:8", "pair", "glass"}) REQUIRE(choices.contains(c));
+    const QStringList files = QDir(RAYCACHE_SCENES_DIR).entryList({"*.nff"}, QDir::Files);
+    REQUIRE(files.size() >= 5);
+    for (const QString& file : files) REQUIRE(choices.contains(file));
+}
+
+TEST_CASE("A bad --select or --accel keeps the scene and says why", "[gui][cli]") {
+    GuiOptions o;
+    o.scene = "pair";
+    o.steps = 10;
+    o.select = QPoint(5000, 5);
+    MainWindow w;
+    QString errText;
+    QTextStream err(&errText);
+    REQUIRE_FALSE(applyOptions(w, o, err));
+    REQUIRE(errText.contains("--select"));
+    REQUIRE(errText.contains("outside"));
+    REQUIRE(w.scene() != nullptr);
+    REQUIRE(w.scene()->name == "pair");
 }
