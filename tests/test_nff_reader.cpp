@@ -202,8 +202,9 @@ struct Bad {
 
 // clang-format off
 const Bad kMalformed[] = {
-    {"cone",                     9,  1, "unsupported NFF primitive 'c' (cone/cylinder)"},
-    {"cone_same_line",           8, 11, "unsupported NFF primitive 'c' (cone/cylinder)"},
+    {"cone_negative_radius",     8,  9, "cone base radius must not be negative, found '-1'"},
+    {"cone_zero_radii",          8, 17, "cone has both radii zero"},
+    {"cone_coincident_ends",     8, 11, "cone's base and apex centres coincide"},
     {"tpp",                      8,  1, "unsupported NFF primitive 'tpp'"},
     {"unknown_keyword",          8,  3, "unsupported NFF primitive 'sphere'"},
     {"truncated_sphere",         8,  8, "expected a number for sphere radius, found end of file"},
@@ -218,7 +219,7 @@ const Bad kMalformed[] = {
     {"polygon_two_vertices",     8,  3, "a polygon needs at least 3 vertices, found '2'"},
     {"polygon_degenerate",       8,  1, "degenerate polygon"},
     {"polygon_nonplanar",        8,  1, "polygon is not planar"},
-    {"polygon_nonconvex",        8,  1, "polygon is not convex"},
+    {"polygon_self_intersecting", 8, 1, "polygon crosses itself"},
     {"polygon_huge_count",       8,  3, "polygon vertex count '4000000000' exceeds the limit of 10000"},
     {"polygon_negative_count",   8,  3, "polygon vertex count must not be negative, found '-3'"},
     {"polygon_fractional_count", 8,  3, "polygon vertex count must be a whole number, found '3.5'"},
@@ -244,7 +245,8 @@ const Bad kMalformed[] = {
     {"stray_number",             8, 11, "unexpected number '2' where an NFF keyword was expected"},
     {"light_partial_colour",     9,  1, "expected a number for light colour blue, found 's'"},
     {"material_truncated",       9,  1, "expected a number for material Ks, found 's'"},
-    {"material_bad_ior",         8, 24, "material index of refraction must be positive, found '0'"},
+    {"material_transmitter_ior_zero", 8, 24, "must be positive for a transmitting material (T > 0), found '0'"},
+    {"material_negative_ior",    8, 22, "material index of refraction must not be negative, found '-1'"},
     {"negative_colour",          1,  3, "background red must not be negative"},
     {"spread_over_lines",       11,  1, "sphere radius must be positive, found '-2'"},
     {"crlf",                     8,  9, "expected a number for sphere radius, found 'x'"},

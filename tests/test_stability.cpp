@@ -58,7 +58,7 @@ TEST_CASE("no NaN and no disagreement on any stiff scene, for every cache and or
     for (const StiffScene& st : suite()) {
         const SceneStability r = checkStability(st, 5);
         INFO(st.name);
-        CHECK(r.runs.size() == 9);
+        CHECK(r.runs.size() == 3 * allCacheKinds().size());
         CHECK(r.nanPixels == 0);
         CHECK(r.infPixels == 0);
         CHECK(r.disagreements == 0);
@@ -81,7 +81,7 @@ TEST_CASE("a ray heading into the sphere it leaves and missing it does not make 
     s.camera.from = Vec3(0, 0, 5);
     s.finalize();
     LinearSearch search(s);
-    BlockerCache cache(s, search);
+    BlockerCache cache(s, search, BlockerCache::Variant::Plus);
     CacheEntry e;
     Counters n;
     Query tangent{{Vec3(0, 1, 0), Vec3(1, 0, 0)}, kNoHit, {0, true}, RayKind::Reflection, -1};
@@ -196,7 +196,7 @@ TEST_CASE("raycache stability and convergence run and write their files", "[stab
     const nlohmann::json j = nlohmann::json::parse(in);
     REQUIRE(j.size() == 1);
     CHECK(j[0]["scene"] == "tangent");
-    CHECK(j[0]["runs"].size() == 9);
+    CHECK(j[0]["runs"].size() == 3 * allCacheKinds().size());
     CHECK(j[0]["verify_disagreements"] == 0);
     CHECK(runCli("convergence cube:2 --width 12 --height 12 --spp 4 --ref-grid 2 --samples 4 --repeat 1 --csv " +
                  csv) == 0);
@@ -206,7 +206,7 @@ TEST_CASE("raycache stability and convergence run and write their files", "[stab
     CHECK(header == "kind,cache,order,steps,spp,seconds,rmse");
     int progress = 0, supersample = 0;
     while (std::getline(c, line)) (line.rfind("progress,", 0) == 0 ? progress : supersample)++;
-    CHECK(progress >= 9 * 5);
-    CHECK(supersample == 9 * 3);  // 1, 2, 4 samples
+    CHECK(progress >= 12 * 5);
+    CHECK(supersample == 12 * 3);  // 4 caches x 3 orders; 1, 2, 4 samples
     std::filesystem::remove_all(dir);
 }

@@ -229,17 +229,33 @@ long double precisePolygonHit(const Ray& ray, const Polygon& poly, bool fromThis
     const LD t = (offset - dot(nl, o)) / denom;
     if (!(t > 0)) return kNoHitL;
     const V3<LD> p{o.x + t * d.x, o.y + t * d.y, o.z + t * d.z};
+    // Inside a simple polygon, convex or not: an odd number of edges crosses the half-line
+    // from p along one in-plane axis (the plane seen along its largest normal component)
+    const LD ax = nl.x < 0 ? -nl.x : nl.x, ay = nl.y < 0 ? -nl.y : nl.y, az = nl.z < 0 ? -nl.z : nl.z;
+    const int drop = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    auto uv = [&](const V3<LD>& v, LD& u, LD& w) {
+        const LD c[3] = {v.x, v.y, v.z};
+        u = c[(drop + 1) % 3];
+        w = c[(drop + 2) % 3];
+    };
+    LD pu, pv;
+    uv(p, pu, pv);
+    bool inside = false;
     for (std::size_t i = 0; i < n; ++i) {
-        const V3<LD> a = conv<LD>(poly.vertices[i]), b = conv<LD>(poly.vertices[(i + 1) % n]);
-        if (dot(cross(sub(b, a), sub(p, a)), nl) < 0) return kNoHitL;
+        LD au, av, bu, bv;
+        uv(conv<LD>(poly.vertices[i]), au, av);
+        uv(conv<LD>(poly.vertices[(i + 1) % n]), bu, bv);
+        if ((av > pv) != (bv > pv) && pu < au + (pv - av) * (bu - au) / (bv - av)) inside = !inside;
     }
-    return t;
+    return inside ? t : kNoHitL;
 }
 
 long double preciseHit(const Scene& scene, const Ray& ray, int id, const RayOrigin& origin) {
     const Object& o = scene.objects[id];
     const bool self = origin.object == id;
     if (o.shape == Shape::Polygon) return precisePolygonHit(ray, scene.polygons[o.index], self);
+    // Cones are not studied in extended precision: their double answer stands in
+    if (o.shape == Shape::Cone) return intersectTruncatedCone(ray, scene.cones[o.index], self);
     const Start start = !self ? Start::Elsewhere : origin.inside ? Start::Entering : Start::Leaving;
     return preciseSphereHit(ray, scene.spheres[o.index], start);
 }

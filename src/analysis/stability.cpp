@@ -75,7 +75,7 @@ SceneStability checkStability(const StiffScene& s, int depth) {
     out.objects = s.scene->size();
     std::vector<Vec3> reference;
     std::vector<std::uint8_t> nan, inf, differ;
-    for (CacheKind cache : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker}) {
+    for (CacheKind cache : allCacheKinds()) {
         for (OrderKind order : {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst}) {
             RenderOptions o;
             o.cache = cache;

@@ -39,6 +39,7 @@ std::string_view toString(MissReason r) {
 
 Counters& Counters::operator+=(const Counters& o) {
     for (int i = 0; i < kRayKinds; ++i) rays[i] += o.rays[i];
+    primaryHits += o.primaryHits;
     intersectionTests += o.intersectionTests;
     completeSearches += o.completeSearches;
     cylinderTests += o.cylinderTests;

@@ -37,6 +37,7 @@ std::string_view toString(MissReason r);
 /// Machine-independent counts of one render.
 struct Counters {
     std::array<std::uint64_t, kRayKinds> rays{};  ///< rays traced, by kind
+    std::uint64_t primaryHits = 0;        ///< eye rays that hit an object (SPD's tables count these)
     std::uint64_t intersectionTests = 0;  ///< every ray-object test, cached or not
     std::uint64_t completeSearches = 0;   ///< searches over the whole scene
     std::uint64_t cylinderTests = 0;      ///< capsule containment tests

@@ -26,7 +26,7 @@
 namespace rc::cli {
 
 namespace {
-const std::vector<std::string> kCaches{"none", "cylinder", "blocker"};
+const std::vector<std::string> kCaches{"none", "cylinder", "blocker", "blocker+"};
 const std::vector<std::string> kOrders{"scanline", "progressive", "bfs"};
 
 // The signal (SIGINT, SIGTERM) that asked a render to stop, 0 when none did

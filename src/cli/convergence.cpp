@@ -30,7 +30,7 @@ struct ConvergenceArgs {
     RenderFlags flags;
 };
 
-const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker};
+const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
 const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};
 
 // The chart: matplotlib, driven from a script this command writes next to the CSV
@@ -43,7 +43,7 @@ import matplotlib.pyplot as plt
 path, out, title = sys.argv[1], sys.argv[2], sys.argv[3]
 rows = list(csv.DictReader(open(path)))
 colors = {"scanline": "tab:blue", "progressive": "tab:orange", "bfs": "tab:green"}
-styles = {"none": ":", "cylinder": "--", "blocker": "-"}
+styles = {"none": ":", "cylinder": "--", "blocker": "-.", "blocker+": "-"}
 fig, axes = plt.subplots(1, 3, figsize=(17, 5.2))
 def series(kind):
     out = {}
@@ -64,7 +64,7 @@ for (cache, order), pts in series("supersample").items():
     spp = [int(p["spp"]) for p in pts]
     axes[2].loglog(secs, err, styles[cache], marker="o", markersize=3.5, color=colors[order],
                    label=cache + ", " + order, linewidth=1.2)
-    if cache == "blocker" and order == "bfs":
+    if cache == "blocker+" and order == "bfs":
         for s, e, n in zip(secs, err, spp):
             axes[2].annotate(str(n), (s, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
 axes[0].set_xlabel("rays traced")
@@ -167,7 +167,7 @@ int convergence(const ConvergenceArgs& a) {
 
     // Supersampling against a high-sample reference
     RenderOptions fast = base;
-    fast.cache = CacheKind::Blocker;
+    fast.cache = CacheKind::BlockerPlus;
     fast.order = OrderKind::BreadthFirst;
     double refSeconds = 0.0;
     const LinearImage reference = averageImage(scene, fast, gridOffsets(a.refGrid), &refSeconds);

@@ -18,8 +18,9 @@ struct Config {
     const char* cache;
     const char* order;
 };
+// The paper's blocker cache and RayCache's blocker+ side by side, in both orders
 const Config kConfigs[] = {{"none", "scanline"}, {"cylinder", "scanline"}, {"blocker", "scanline"},
-                           {"cylinder", "bfs"},  {"blocker", "bfs"}};
+                           {"blocker+", "scanline"}, {"cylinder", "bfs"}, {"blocker", "bfs"}, {"blocker+", "bfs"}};
 // Hanrahan 1986, Table 1: "Cached" and "Cached, breadth-first" for N = 3, 4, 5
 const std::map<int, std::pair<double, double>> kPaper{{3, {0.53, 0.25}}, {4, {0.29, 0.15}}, {5, {0.20, 0.11}}};
 
@@ -89,7 +90,7 @@ int table1(const Table1Args& a) {
             std::string paper = "-";
             auto it = kPaper.find(N);
             if (c == 0) paper = "1.00";
-            else if (it != kPaper.end() && std::string(kConfigs[c].cache) == "blocker")
+            else if (it != kPaper.end() && std::string(kConfigs[c].cache).rfind("blocker", 0) == 0)
                 paper = std::to_string(std::string(kConfigs[c].order) == "bfs" ? it->second.second : it->second.first).substr(0, 4);
             const std::string name = std::string(kConfigs[c].cache) + ", " + kConfigs[c].order;
             std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f\n", name.c_str(), t, t / t0, paper.c_str(),

@@ -68,6 +68,7 @@ bool RenderSession::step() {
             continue;
         }
         ++counters_.rays[int(task.query.kind)];
+        if (task.query.kind == RayKind::Primary && lookup.answer.object >= 0) ++counters_.primaryHits;
         if (lookup.decision == Decision::Hit) ++counters_.hits;
         if (lookup.decision == Decision::Miss) {
             ++counters_.misses;

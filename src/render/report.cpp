@@ -10,7 +10,8 @@ nlohmann::json countersJson(const Counters& n) {
                  {"shadow", n.rays[int(RayKind::Shadow)]},
                  {"reflection", n.rays[int(RayKind::Reflection)]},
                  {"refraction", n.rays[int(RayKind::Refraction)]},
-                 {"total", n.totalRays()}};
+                 {"total", n.totalRays()},
+                 {"primary_hits", n.primaryHits}};
     j["intersection_tests"] = n.intersectionTests;
     j["complete_searches"] = n.completeSearches;
     j["cylinder_tests"] = n.cylinderTests;

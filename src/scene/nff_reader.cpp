@@ -204,6 +204,7 @@ public:
             else if (k == "s") sphere(t);
             else if (k == "p") polygon(t, false);
             else if (k == "pp") polygon(t, true);
+            else if (k == "c") cone(t);
             else if (viewKeyword(k) >= 0)
                 fail(t, "'", k, "' outside a view ('v') block");
             else unsupported(t);
@@ -348,9 +349,13 @@ private:
         m.ks = nonNegative("material Ks");
         m.shine = nonNegative("material Shine");
         m.kt = nonNegative("material T");
+        // SPD writes ior 0 for opaque materials: the index only matters for a transmitter
         const auto [ior, it] = numberAt(What{"material index of refraction"});
-        if (!(ior > 0.0)) fail(it, "material index of refraction must be positive, found ", describe(it));
-        m.ior = ior;
+        if (m.kt > 0.0 && !(ior > 0.0))
+            fail(it, "material index of refraction must be positive for a transmitting material (T > 0), found ",
+                 describe(it));
+        if (ior < 0.0) fail(it, "material index of refraction must not be negative, found ", describe(it));
+        m.ior = m.kt > 0.0 ? ior : 1.0;
         scene_.materials.push_back(m);
         currentMaterial_ = int(scene_.materials.size()) - 1;
     }
@@ -399,6 +404,21 @@ private:
         scene_.addPolygon(std::move(poly), materialForPrimitive());
     }
 
+    void cone(const Token& kw) {
+        checkPrimitiveLimit(kw);
+        const Vec3 base = vec3("cone base centre");
+        const auto [rb, rbt] = numberAt(What{"cone base radius"});
+        if (rb < 0.0) fail(rbt, "cone base radius must not be negative, found ", describe(rbt));
+        const Token apexToken = lex_.peek();
+        const Vec3 apex = vec3("cone apex centre");
+        const auto [ra, rat] = numberAt(What{"cone apex radius"});
+        if (ra < 0.0) fail(rat, "cone apex radius must not be negative, found ", describe(rat));
+        if (!(rb > 0.0 || ra > 0.0)) fail(rat, "cone has both radii zero (a line, not a surface)");
+        TruncatedCone c;
+        if (auto err = makeTruncatedCone(base, rb, apex, ra, c)) fail(apexToken, *err);
+        scene_.addCone(c, materialForPrimitive());
+    }
+
     [[noreturn]] void unsupported(const Token& t) const {
         const std::string_view k = t.text;
         double v = 0.0;
@@ -409,8 +429,7 @@ private:
         const bool word = (c0 >= 'a' && c0 <= 'z') || (c0 >= 'A' && c0 <= 'Z');
         if (!word) fail(t, "unexpected ", describe(t), " where an NFF keyword was expected");
         std::string what;
-        if (k == "c") what = " (cone/cylinder)";
-        else if (k == "tpp") what = " (textured polygonal patch)";
+        if (k == "tpp") what = " (textured polygonal patch)";
         else if (k == "tp" || k == "tt") what = " (textured polygon)";
         fail(t, "unsupported NFF primitive ", describe(t), what);
     }

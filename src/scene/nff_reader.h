@@ -11,12 +11,16 @@
 ///   degrees), `hither h`, `resolution w h`, in any order (`hither` may be left out);
 /// - `b r g b` (background; may come before `v`);
 /// - `l x y z [r g b]` (point light; the colour is optional);
-/// - `f r g b Kd Ks Shine T ior` (the material of every primitive that follows);
+/// - `f r g b Kd Ks Shine T ior` (the material of every primitive that follows; SPD
+///   writes ior 0 for opaque materials, so ior is read only where T > 0);
 /// - `s x y z r` (sphere);
-/// - `p N` then N vertices, `pp N` then N (vertex, normal) pairs (convex polygons).
+/// - `c bx by bz br ax ay az ar` (an open truncated cone between two disc centres; equal
+///   radii make a cylinder);
+/// - `p N` then N vertices, `pp N` then N (vertex, normal) pairs (simple planar polygons,
+///   convex or concave).
 ///
 /// A primitive that comes before any `f` gets a white diffuse material. Everything
-/// else (`c`, `tpp`, ...) is rejected. Every error is an rc::SceneError whose what()
+/// else (`tpp`, `tp`, ...) is rejected. Every error is an rc::SceneError whose what()
 /// is `file:line:column: message`; lines and columns count from 1, columns in bytes.
 /// An error "at end of file" points just past the file's last token (1:1 in an empty
 /// file). No input can make the reader crash, hang or allocate more than a small
@@ -32,7 +36,7 @@ namespace rc {
 /// The reader's hard limits: anything beyond them is rejected as an error, before
 /// any memory is allocated for it.
 struct NffLimits {
-    /// Most primitives (spheres plus polygons) in one scene.
+    /// Most primitives (spheres, cones and polygons) in one scene.
     static constexpr long maxPrimitives = 10'000'000;
     /// Most vertices in one `p` or `pp` polygon.
     static constexpr long maxPolygonVertices = 10'000;

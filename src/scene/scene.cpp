@@ -15,9 +15,15 @@ int Scene::addSphere(Sphere s, int mat) {
 }
 
 int Scene::addPolygon(Polygon p, int mat) {
-    const Sphere b = boundingSphere(p);
+    const Sphere b = p.bound;
     polygons.push_back(std::move(p));
     objects.push_back({Shape::Polygon, int(polygons.size()) - 1, mat, b});
+    return int(objects.size()) - 1;
+}
+
+int Scene::addCone(const TruncatedCone& c, int mat) {
+    cones.push_back(c);
+    objects.push_back({Shape::Cone, int(cones.size()) - 1, mat, boundingSphere(c)});
     return int(objects.size()) - 1;
 }
 
@@ -41,6 +47,7 @@ double Scene::intersect(const Ray& ray, int id, const RayOrigin& origin) const {
     const Object& o = objects[id];
     const bool self = origin.object == id;
     if (o.shape == Shape::Polygon) return intersectPolygon(ray, polygons[o.index], self);
+    if (o.shape == Shape::Cone) return intersectTruncatedCone(ray, cones[o.index], self);
     const Start start = !self ? Start::Elsewhere : origin.inside ? Start::Entering : Start::Leaving;
     return intersectSphere(ray, spheres[o.index], start);
 }
@@ -48,6 +55,7 @@ double Scene::intersect(const Ray& ray, int id, const RayOrigin& origin) const {
 Vec3 Scene::normal(int id, const Vec3& p) const {
     const Object& o = objects[id];
     if (o.shape == Shape::Polygon) return polygonNormal(polygons[o.index], p);
+    if (o.shape == Shape::Cone) return truncatedConeNormal(cones[o.index], p);
     const Sphere& s = spheres[o.index];
     return (p - s.c) / s.r;
 }
@@ -56,6 +64,10 @@ double Scene::extent() const {
     double e = glm::length(bound.c) + bound.r + glm::length(camera.from);
     for (const Light& l : lights) e = std::max(e, glm::length(l.position));
     return e;
+}
+
+bool Scene::has(Shape s) const {
+    return std::any_of(objects.begin(), objects.end(), [&](const Object& o) { return o.shape == s; });
 }
 
 bool Scene::hasTransparency() const {

@@ -8,6 +8,7 @@
 
 #include "geometry/polygon.h"
 #include "geometry/sphere.h"
+#include "geometry/truncated_cone.h"
 #include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/material.h"
@@ -15,13 +16,13 @@
 namespace rc {
 
 /// What kind of surface an object is.
-enum class Shape : std::uint8_t { Sphere, Polygon };
+enum class Shape : std::uint8_t { Sphere, Polygon, Cone };
 
-/// One primitive of the scene. Polygons take part in caching through `bound`, their
-/// bounding sphere; for spheres `bound` is the sphere itself.
+/// One primitive of the scene. Polygons and cones take part in caching through `bound`,
+/// their bounding sphere; for spheres `bound` is the sphere itself.
 struct Object {
     Shape shape = Shape::Sphere;
-    int index = 0;     ///< into Scene::spheres or Scene::polygons
+    int index = 0;     ///< into Scene::spheres, Scene::polygons or Scene::cones
     int material = 0;  ///< into Scene::materials
     Sphere bound;
 };
@@ -30,7 +31,10 @@ struct Object {
 /// out of it or into it.
 struct RayOrigin {
     int object = -1;      ///< -1: a point that is on no surface (the eye)
-    bool inside = false;  ///< heading into the object's interior (refraction)
+    /// The ray may meet its own object again: it heads into a sphere's interior
+    /// (refraction), or leaves a surface that is not convex (a cone). When false, the
+    /// object is convex and the ray leaves it outward, so it cannot meet it again.
+    bool inside = false;
     bool operator==(const RayOrigin&) const = default;
 };
 
@@ -43,6 +47,7 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
     std::vector<Polygon> polygons;
+    std::vector<TruncatedCone> cones;
     std::vector<Object> objects;
     Sphere bound;  ///< holds every object; set by finalize()
 
@@ -56,6 +61,8 @@ struct Scene {
     int addSphere(Sphere s, int material);
     /// Adds a polygon (made with makePolygon) with a material; returns its object id.
     int addPolygon(Polygon p, int material);
+    /// Adds a cone (made with makeTruncatedCone) with a material; returns its object id.
+    int addCone(const TruncatedCone& c, int material);
     /// Computes `bound`. Call once after the last add.
     void finalize();
 
@@ -66,6 +73,8 @@ struct Scene {
     const Material& material(int id) const { return materials[objects[id].material]; }
     int size() const { return int(objects.size()); }
     bool hasTransparency() const;
+    /// Does the scene hold a shape of kind `s`?
+    bool has(Shape s) const;
     /// The size of the scene's coordinates: how far from the origin its objects, eye and
     /// lights reach. Margins that absorb rounding are this times a few ulps.
     double extent() const;

@@ -11,26 +11,49 @@ namespace {
 double angleBetween(const Vec3& u, const Vec3& v) {
     return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
 }
+/// Kinds of rays that keep an entry per origin (shadow rays keep none)
+int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Reflection ? 1 : 2; }
 }  // namespace
 
-BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search)
-    : CacheStrategy(scene, search), lists_(scene, search) {}
+BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
+    : CacheStrategy(scene, search), plus_(variant == Variant::Plus), lists_(scene, search, plus_) {
+    if (plus_) byOrigin_.resize(3 * (std::size_t(scene.size()) + 1));
+}
+
+bool BlockerCache::recall(const Query& q, CacheEntry& e) {
+    // [recall-by-origin]
+    // Keep what the entry knows under its own origin, and bring back what is known for
+    // this ray's origin: an entry is a fact about its origin, whichever pixel made it
+    const int slot = kindSlot(q.kind);
+    auto at = [&](const RayOrigin& o) -> CacheEntry& {
+        const std::size_t site = o.object >= 0 ? std::size_t(o.object) : std::size_t(scene_.size());
+        return byOrigin_[3 * site + std::size_t(slot)];
+    };
+    if (e.state == CacheEntry::State::Loaded) at(e.origin) = e;
+    const CacheEntry& kept = at(q.origin);
+    if (kept.state != CacheEntry::State::Loaded || !(kept.origin == q.origin)) return false;
+    e = kept;
+    return true;
+    // [recall-by-origin]
+}
 
 Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
-    const MissReason why = unusable(q, e);
+    MissReason why = unusable(q, e);
     // Shadow rays: the hull of origin and light holds every possible blocker
     if (q.kind == RayKind::Shadow) {
-        Lookup r = shadow(q, e, why, n);
+        Lookup r = shadow(q, e, why, mode, n);
         if (mode == LookupMode::Full && r.decision == Decision::Miss) reload(q, r.answer, e, n);
         return r;
     }
+    if (why != MissReason::None && plus_ && recall(q, e)) why = MissReason::None;
     Lookup r;
     if (why == MissReason::None) {
-        r = probe(q, e, n);
+        r = probe(q, e, mode, n);
         if (r.known) {
             if (mode == LookupMode::Full && r.decision == Decision::Miss) reload(q, r.answer, e, n);
             return r;
         }
+        if (r.decision == Decision::Uncached) return r;  // stepped aside, deferred
     } else {
         r.reason = why;
     }
@@ -38,50 +61,81 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
     return searchAndReload(q, e, r.reason, n);
 }
 
-Lookup BlockerCache::probe(const Query& q, CacheEntry& e, Counters& n) {
-    if (e.object < 0) {
-        // In front of a cheap search only the eye's empty cone pays: from an object the cone
-        // is narrow (its neighbours are near) and rebuilt for about every other ray, and a
-        // grid, which cannot cull by direction, would need a cylinder walked cell by cell
-        const bool cone = e.origin.object < 0 && search_.nearRadius() == kNoHit;
-        if (search_.cheap() && !cone) return searchPast(q, &e, n);
-        // Nothing was hit: the empty cone of directions around the last such ray, else (when
-        // an object touches the origin) the cylinder, built the first time the entry is used again
-        if (e.pending) {
-            buildCone(e, n);
-            if (e.coneAngle < 0.0) buildCylinder(e, n);
-            e.pending = false;
-        }
-        if (e.coneAngle < 0.0) return probeCylinder(q, e, n);
-        ++n.coneTests;
-        if (angleBetween(q.ray.d, e.coneAxis) < e.coneAngle) return {true, {}, Decision::Hit};
-        return {false, {}, Decision::Miss, MissReason::LeftCone};
-    }
+Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
+    if (e.object < 0) return probeEmpty(q, e, mode, n);
     // [blocker-probe]
     // Test the cached sphere first
     ++n.intersectionTests;
     const double t = scene_.intersect(q.ray, e.object, q.origin);
     if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
-    // A list longer than a complete search through a hierarchy: search instead
-    const BlockerList& list = lists_.get(lists_.originSite(q.origin), e.object, n);
-    if (list.bypass) return searchPast(q, &e, n);
+    // The potential blockers between origin and target (its tile, for a large polygon)
+    const int target = lists_.pointSite(e.object, q.ray.at(t));
+    const BlockerList& list = lists_.get(lists_.originSite(q), target, n);
+    // Blocker+: a list longer than a complete search through a hierarchy: search instead
+    if (plus_ && list.bypass) return searchPast(q, &e, mode, n);
     // Then only the potential blockers between origin and target can come first
     Answer best{e.object, t};
-    for (std::size_t i = 0; i < list.ids.size() && list.reach[i] <= best.t; ++i)
-        testObject(scene_, q, list.ids[i], best, n);
+    const std::size_t size = list.ids.size();
+    if (plus_) {
+        // Blocker+: nearest first, and none beyond the nearest hit known can come first
+        for (std::size_t i = 0; i < size && list.reach[i] <= best.t; ++i)
+            testObject(scene_, q, list.ids[i], best, n);
+    } else {
+        for (std::size_t i = 0; i < size; ++i) testObject(scene_, q, list.ids[i], best, n);
+    }
+    e.blockerTarget = target;
     if (best.object != e.object) return {true, best, Decision::Miss, MissReason::BlockerHit};
     return {true, best, Decision::Hit};
     // [blocker-probe]
 }
 
-Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why, Counters& n) {
+Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
+    // [blocker-empty]
+    // The paper: rays that hit nothing keep the cylinder of safety
+    if (!plus_) {
+        if (e.pending) {
+            buildCylinder(e, n);
+            e.pending = false;
+        }
+        return probeCylinder(q, e, n);
+    }
+    // Blocker+: in front of a cheap search only the eye's empty cone pays: from an object
+    // the cone is narrow (its neighbours are near), and a grid, which cannot cull by
+    // direction, would need a cylinder walked cell by cell
+    const bool cone = e.origin.object < 0 && search_.nearRadius() == kNoHit;
+    if (search_.cheap() && !cone) return searchPast(q, &e, mode, n);
+    // The empty cone of directions around the last such ray, else (when an object touches
+    // the origin) the cylinder, built the first time the entry is used again
+    if (e.pending) {
+        buildCone(e, n);
+        if (e.coneAngle < 0.0) buildCylinder(e, n);
+        e.pending = false;
+    }
+    if (e.coneAngle < 0.0) return probeCylinder(q, e, n);
+    // Inside the cone: angle(d, axis) < alpha, tested by sine and cosine, not by an angle
+    ++n.coneTests;
+    const double cosT = glm::dot(q.ray.d, e.coneAxis);
+    const bool inside = e.coneAngle < 0.5 * 3.141592653589793
+                            ? cosT > 0.0 && glm::length(glm::cross(q.ray.d, e.coneAxis)) < e.coneSin
+                            : cosT > e.coneCos;
+    if (inside) return {true, {}, Decision::Hit};
+    return {false, {}, Decision::Miss, MissReason::LeftCone};
+    // [blocker-empty]
+}
+
+Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why, LookupMode mode, Counters& n) {
     // [blocker-shadow]
     // Every object that can stand between a surface and its light meets their hull
     Answer best;
-    const BlockerList& list = lists_.get(lists_.originSite(q.origin), lists_.lightSite(q.light), n);
-    if (list.bypass) return searchPast(q, nullptr, n);
-    for (std::size_t i = 0; i < list.ids.size() && list.reach[i] <= std::min(best.t, q.tmax); ++i)
-        testObject(scene_, q, list.ids[i], best, n);
+    const BlockerList& list = lists_.get(lists_.originSite(q), lists_.lightSite(q.light), n);
+    if (plus_ && list.bypass) return searchPast(q, nullptr, mode, n);
+    const std::size_t size = list.ids.size();
+    if (plus_) {
+        for (std::size_t i = 0; i < size && list.reach[i] <= std::min(best.t, q.tmax); ++i)
+            testObject(scene_, q, list.ids[i], best, n);
+    } else {
+        for (std::size_t i = 0; i < size; ++i) testObject(scene_, q, list.ids[i], best, n);
+    }
     if (why != MissReason::None) return {true, best, Decision::Miss, why};
     if (best.object == e.object) return {true, best, Decision::Hit};
     return {true, best, Decision::Miss,
@@ -89,7 +143,9 @@ Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why,
     // [blocker-shadow]
 }
 
-Lookup BlockerCache::searchPast(const Query& q, CacheEntry* e, Counters& n) {
+Lookup BlockerCache::searchPast(const Query& q, CacheEntry* e, LookupMode mode, Counters& n) {
+    // CheapOnly never searches: the ray waits for its turn
+    if (mode == LookupMode::CheapOnly) return {false, {}, Decision::Uncached, MissReason::None};
     ++n.completeSearches;
     const Answer a = search_.nearest(q, n);
     if (e) reload(q, a, *e, n);
@@ -103,11 +159,11 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
     e.cylinder.radius = -1.0;
     e.coneAngle = -1.0;
     e.pending = false;
-    e.blockerOrigin = lists_.originSite(q.origin);
+    e.blockerOrigin = lists_.originSite(q);
     if (q.kind == RayKind::Shadow) {
         e.blockerTarget = lists_.lightSite(q.light);
     } else if (a.object >= 0) {
-        e.blockerTarget = a.object;  // its list is built when the entry is next used
+        e.blockerTarget = lists_.pointSite(a.object, q.ray.at(a.t));  // its list is built when next used
     } else {
         e.blockerTarget = -1;
         e.coneAxis = q.ray.d;
@@ -154,11 +210,14 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
         RayOrigin origin;
         double angle = kNoHit;  ///< no object: every direction hits nothing
     };
-    const Sphere from = lists_.siteSphere(lists_.originSite(e.origin));
+    const Sphere from = scene_.objects.empty() || e.origin.object < 0 ? Sphere{scene_.camera.from, 0.0}
+                                                                        : scene_.objects[e.origin.object].bound;
     EmptyCone cone(scene_, from, e.coneAxis, from.r + slack_, e.origin);
     search_.cull(cone);
-    e.coneAngle = cone.angle - 1e-9;
+    e.coneAngle = std::min(cone.angle, 3.14159) - 1e-9;
     // [empty-cone]
+    e.coneCos = std::cos(e.coneAngle);
+    e.coneSin = std::sin(e.coneAngle) * (1.0 - 1e-12);
     ++n.cylindersBuilt;
 }
 

@@ -1,22 +1,35 @@
 #pragma once
 /// \file
 /// \brief Hanrahan's cache: the last object hit and its list of potential blockers.
+#include <vector>
+
 #include "search/cache_strategy.h"
 
 namespace rc {
 
 /// Hanrahan (1986): the cache holds the last object hit; a ray hits the cache when it
 /// hits that object and none of the potential blockers between its origin and that
-/// object. All misses mean a new object was met. Shadow rays are answered from the list
-/// of the hull of their origin and their light, which holds every object that could
-/// stand in the way, so they never need a complete search. Rays that hit nothing keep the
-/// cone of directions around the last such ray that no object's silhouette enters, seen
-/// from anywhere in the origin's sphere (the eye is a sphere of radius 0); where another
-/// object touches the origin there is no such cone and the cylinder of safety is used.
+/// object. Shadow rays are answered from the list of the hull of their origin and their
+/// light (the cone from the light), which holds every object that could stand in the
+/// way, so they never need a complete search.
+///
+/// Two variants share this code:
+/// - `Variant::Paper` (`--cache blocker`) is the paper's algorithm and nothing more:
+///   every list entry is tested, and rays that hit nothing keep the Speer-DeRose-Barsky
+///   cylinder of safety, as the paper prescribes.
+/// - `Variant::Plus` (`--cache blocker+`) adds RayCache's improvements, each exact:
+///   lists kept nearest first and left early once a nearer hit is known; rays that hit
+///   nothing keep the cone of directions around the last such ray that no object's
+///   silhouette enters (seen from anywhere in the origin's sphere); entries remembered per
+///   origin, so a ray from an object met before is answered from what that object's rays
+///   last found instead of a complete search; large polygons cut into tiles, each its own
+///   site (BlockerLists); and, in front of a grid or a hierarchy, an entry steps aside
+///   (searches) where testing its list would cost more than the search.
 class BlockerCache final : public CacheStrategy {
 public:
-    BlockerCache(const Scene& scene, const CompleteSearch& search);
-    CacheKind kind() const override { return CacheKind::Blocker; }
+    enum class Variant { Paper, Plus };
+    BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant);
+    CacheKind kind() const override { return plus_ ? CacheKind::BlockerPlus : CacheKind::Blocker; }
     Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) override;
     const BlockerLists* blockerLists() const override { return &lists_; }
 
@@ -24,13 +37,23 @@ protected:
     void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) override;
 
 private:
-    Lookup probe(const Query& q, CacheEntry& e, Counters& n);
-    Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, Counters& n);
+    Lookup probe(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
+    Lookup probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
+    Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, LookupMode mode, Counters& n);
     void buildCone(CacheEntry& e, Counters& n) const;
     /// A ray whose list is not worth testing (BlockerList::bypass): a complete search,
-    /// answered as uncached; the entry, if any, is loaded with what it found.
-    Lookup searchPast(const Query& q, CacheEntry* e, Counters& n);
+    /// answered as uncached; the entry, if any, is loaded with what it found. In CheapOnly
+    /// mode it searches nothing: the ray is deferred.
+    Lookup searchPast(const Query& q, CacheEntry* e, LookupMode mode, Counters& n);
+    /// Blocker+: keeps the entry under its origin and brings back the one kept for the
+    /// query's origin, if any. Returns whether the entry now answers for `q.origin`.
+    bool recall(const Query& q, CacheEntry& e);
+
+    bool plus_;
     BlockerLists lists_;
+    /// Blocker+: the entry last used for rays of each (origin site, kind); 3 kinds (shadow
+    /// rays keep no entry)
+    std::vector<CacheEntry> byOrigin_;
 };
 
 }  // namespace rc

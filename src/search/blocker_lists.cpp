@@ -1,6 +1,8 @@
 #include "search/blocker_lists.h"
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -13,8 +15,8 @@ namespace {
 /// The objects that meet the hull of two spheres (a point is a sphere of radius 0).
 struct HullCull final : SphereCull {
     HullCull(const Sphere& from, const Sphere& to, int target, double slack, Counters& n,
-             std::vector<std::pair<double, int>>& out)
-        : hull(from, to), target(target), n(n), out(out) {
+             std::vector<std::pair<double, int>>& out, const std::function<bool(int, const Hull&)>& tiled)
+        : hull(from, to), target(target), slack(slack), n(n), out(out), tiled(tiled) {
         // The hull lies within the larger radius of the segment between the centres
         a = from.c;
         b = to.c;
@@ -27,24 +29,100 @@ struct HullCull final : SphereCull {
         return hull.distance(s.c) - s.r;
     }
     void found(int id, double) override {
-        if (id != target) out.emplace_back(0.0, id);  // its reach is set once the list is known
+        if (id == target) return;
+        // A tiled polygon blocks only if one of its tiles meets the hull
+        if (tiled && !tiled(id, hull)) return;
+        out.emplace_back(0.0, id);  // its reach is set once the list is known
     }
     Hull hull;
     int target;
+    double slack;
     Counters& n;
     std::vector<std::pair<double, int>>& out;
+    const std::function<bool(int, const Hull&)>& tiled;
 };
+
+/// The typical object's size: the median radius of the bounding spheres.
+double medianRadius(const Scene& scene) {
+    std::vector<double> r;
+    r.reserve(scene.objects.size());
+    for (const Object& o : scene.objects) r.push_back(o.bound.r);
+    std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+    return r[r.size() / 2];
+}
 }  // namespace
 
-BlockerLists::BlockerLists(const Scene& scene, const CompleteSearch& search)
-    : scene_(scene), search_(search), sites_(scene.size() + 1 + int(scene.lights.size())) {
+BlockerLists::BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles)
+    : scene_(scene), search_(search) {
     // Rounding only ever adds spheres to a list: widen the hull by a few ulps of the scene
     slack_ = 1e-9 * scene.extent();
+    if (tiles && scene.size() > 1) makeTiles();
+    sites_ = scene.size() + 1 + int(scene.lights.size()) + int(tileSpheres_.size());
+}
+
+void BlockerLists::makeTiles() {
+    // [make-tiles]
+    // A polygon far larger than the typical object is cut into tiles about twice that size
+    constexpr double kLarge = 8.0;  // bounding radius over the median radius that gets tiles
+    constexpr int kMostTiles = 32;  // per side
+    const double typical = medianRadius(scene_);
+    if (!(typical > 0.0)) return;
+    tilingOf_.assign(std::size_t(scene_.size()), -1);
+    const int firstTileSite = scene_.size() + 1 + int(scene_.lights.size());
+    for (int id = 0; id < scene_.size(); ++id) {
+        const Object& o = scene_.objects[id];
+        if (o.shape != Shape::Polygon || !(o.bound.r > kLarge * typical)) continue;
+        const Polygon& poly = scene_.polygons[o.index];
+        // A frame in the plane, and the outline's box in it
+        Tiling t;
+        t.object = id;
+        t.e1 = glm::normalize(poly.vertices[1] - poly.vertices[0]);
+        t.e2 = glm::cross(poly.normal, t.e1);
+        double u0 = kNoHit, u1 = -kNoHit, v0 = kNoHit, v1 = -kNoHit;
+        for (const Vec3& v : poly.vertices) {
+            const double u = glm::dot(v - poly.vertices[0], t.e1), w = glm::dot(v - poly.vertices[0], t.e2);
+            u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, w), v1 = std::max(v1, w);
+        }
+        t.corner = poly.vertices[0] + u0 * t.e1 + v0 * t.e2;
+        t.nu = std::clamp(int(std::ceil((u1 - u0) / (2.0 * typical))), 1, kMostTiles);
+        t.nv = std::clamp(int(std::ceil((v1 - v0) / (2.0 * typical))), 1, kMostTiles);
+        t.du = (u1 - u0) / t.nu;
+        t.dv = (v1 - v0) / t.nv;
+        t.firstSite = firstTileSite + int(tileSpheres_.size());
+        // Each tile's sphere holds its rectangle, widened by the rounding of hit points
+        const double r = 0.5 * std::hypot(t.du, t.dv) * (1.0 + 1e-9) + slack_;
+        for (int j = 0; j < t.nv; ++j)
+            for (int i = 0; i < t.nu; ++i)
+                tileSpheres_.push_back({t.corner + (i + 0.5) * t.du * t.e1 + (j + 0.5) * t.dv * t.e2, r});
+        tilingOf_[id] = int(tilings_.size());
+        tilings_.push_back(t);
+    }
+    if (tilings_.empty()) tilingOf_.clear();
+    // [make-tiles]
+}
+
+int BlockerLists::tileSite(const Tiling& t, const Vec3& p) const {
+    // The tile holding p; a point just outside the box (rounding) goes to the nearest tile
+    const Vec3 d = p - t.corner;
+    const int i = std::clamp(int(std::floor(glm::dot(d, t.e1) / t.du)), 0, t.nu - 1);
+    const int j = std::clamp(int(std::floor(glm::dot(d, t.e2) / t.dv)), 0, t.nv - 1);
+    return t.firstSite + j * t.nu + i;
+}
+
+int BlockerLists::siteObject(int site) const {
+    if (site < scene_.size()) return site;
+    const int tile = site - (scene_.size() + 1 + int(scene_.lights.size()));
+    if (tile < 0) return -1;
+    for (const Tiling& t : tilings_)
+        if (site >= t.firstSite && site < t.firstSite + t.nu * t.nv) return t.object;
+    return -1;
 }
 
 Sphere BlockerLists::siteSphere(int site) const {
     if (site < scene_.size()) return scene_.objects[site].bound;
     if (site == eyeSite()) return {scene_.camera.from, 0.0};
+    const int tile = site - (scene_.size() + 1 + int(scene_.lights.size()));
+    if (tile >= 0) return tileSpheres_[std::size_t(tile)];
     return {scene_.lights[site - scene_.size() - 1].position, 0.0};
 }
 
@@ -92,7 +170,17 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     const Sphere a = siteSphere(origin);
     const Sphere b = siteSphere(target);
     found_.clear();
-    HullCull hull(a, b, target, slack_, n, found_);
+    const std::function<bool(int, const Hull&)> tiled = [&](int id, const Hull& hull) {
+        if (tilingOf_.empty() || tilingOf_[id] < 0) return true;
+        const Tiling& t = tilings_[tilingOf_[id]];
+        for (int k = 0; k < t.nu * t.nv; ++k) {
+            const Sphere& s = tileSpheres_[std::size_t(t.firstSite - tilings_.front().firstSite + k)];
+            ++n.hullTests;
+            if (hull.distance(s.c) - s.r <= slack_) return true;
+        }
+        return false;
+    };
+    HullCull hull(a, b, siteObject(target), slack_, n, found_, tiled);
     search_.cull(hull);
     for (auto& [reach, id] : found_) {
         const Sphere& s = scene_.objects[id].bound;

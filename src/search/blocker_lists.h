@@ -13,6 +13,7 @@
 #include "analysis/statistics.h"
 #include "scene/scene.h"
 #include "search/complete_search.h"
+#include "search/query.h"
 
 namespace rc {
 
@@ -31,21 +32,43 @@ struct BlockerList {
 inline constexpr std::size_t kLongList = 32;
 
 /// Lists of potential blockers keyed by (origin site, target site). A site is an object
-/// id, the eye (`eyeSite()`), or a light (`lightSite(k)`), each a sphere: a point is a
-/// sphere of radius 0.
+/// id, the eye (`eyeSite()`), a light (`lightSite(k)`), or a tile of a large polygon, each
+/// a sphere: a point is a sphere of radius 0.
+///
+/// Tiles (blocker+): the paper bounds every object by a sphere, and a large polygon's
+/// sphere is a poor fit: the hull from the eye to a ground quad's sphere holds every
+/// object, and the quad's sphere meets nearly every hull. With tiles, a polygon much
+/// larger than the typical object is cut into a grid of tiles in its plane, each bounded
+/// by its own small sphere. A ray that hits the polygon (or leaves it) at point p uses the
+/// site of the tile holding p: every segment from the origin to p lies in the hull of the
+/// origin and that tile. And the polygon is a potential blocker of a hull only if one of
+/// its tiles meets it.
 class BlockerLists {
 public:
-    /// Candidates come from `search` (all objects for a linear scan, nearby cells for a grid).
-    BlockerLists(const Scene& scene, const CompleteSearch& search);
+    /// Candidates come from `search` (all objects for a linear scan, nearby cells for a
+    /// grid). `tiles`: cut large polygons into tiles (blocker+).
+    BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles = false);
 
     int eyeSite() const { return scene_.size(); }
     int lightSite(int k) const { return scene_.size() + 1 + k; }
-    /// The site a ray starting at `origin` leaves from.
+    /// The site a ray starting at `origin` leaves from (without tiles).
     int originSite(const RayOrigin& origin) const {
         return origin.object >= 0 ? origin.object : eyeSite();
     }
+    /// The site the ray of `q` leaves from: its tile, when it leaves a tiled polygon.
+    int originSite(const Query& q) const {
+        return q.origin.object >= 0 ? pointSite(q.origin.object, q.ray.o) : eyeSite();
+    }
+    /// The site of point `p` on object `id`: its tile, or the object itself.
+    int pointSite(int id, const Vec3& p) const {
+        return tilingOf_.empty() || tilingOf_[id] < 0 ? id : tileSite(tilings_[tilingOf_[id]], p);
+    }
+    /// The object a site stands for (-1: the eye or a light).
+    int siteObject(int site) const;
     /// The sphere standing for a site.
     Sphere siteSphere(int site) const;
+    /// Tiles made (0 without tiles).
+    std::size_t tiles() const { return tileSpheres_.size(); }
 
     /// Every object whose bounding sphere meets the hull of the two sites, the target
     /// excepted; built on first use and counted in `n`.
@@ -55,13 +78,26 @@ public:
     std::size_t size() const { return lists_.size(); }
 
 private:
+    /// A polygon cut into nu x nv tiles over its box in the plane (corner, e1, e2).
+    struct Tiling {
+        int object = -1;
+        int firstSite = 0;
+        Vec3 corner{0.0}, e1{0.0}, e2{0.0};
+        double du = 0.0, dv = 0.0;
+        int nu = 1, nv = 1;
+    };
+    int tileSite(const Tiling& t, const Vec3& p) const;
+    void makeTiles();
     std::uint64_t key(int origin, int target) const {
         return std::uint64_t(origin) * std::uint64_t(sites_) + std::uint64_t(target);
     }
     const Scene& scene_;
     const CompleteSearch& search_;
-    int sites_;
     double slack_;
+    std::vector<int> tilingOf_;       ///< per object: its tiling, or -1 (empty: no tiles)
+    std::vector<Tiling> tilings_;
+    std::vector<Sphere> tileSpheres_;  ///< per tile site, from lightSite(lights) + 1 on
+    int sites_;
     std::deque<BlockerList> lists_;  ///< built lists; a deque keeps references stable
     /// Open addressing over keys: slot k holds key + 1 (0: empty) and its list's index
     std::vector<std::uint64_t> slotKeys_;

@@ -55,6 +55,7 @@ BoundingVolumeHierarchy::BoundingVolumeHierarchy(const Scene& scene) : CompleteS
                 hi = glm::max(hi, v);
             }
         }
+        if (o.shape == Shape::Cone) boundingBox(scene.cones[o.index], lo, hi);  // so is a cone's
         for (int k = 0; k < 3; ++k) {
             box[k] = lo[k] - pad_;
             box[3 + k] = hi[k] + pad_;

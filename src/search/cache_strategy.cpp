@@ -16,12 +16,13 @@ std::string_view toString(CacheKind k) {
         case CacheKind::None: return "none";
         case CacheKind::Cylinder: return "cylinder";
         case CacheKind::Blocker: return "blocker";
+        case CacheKind::BlockerPlus: return "blocker+";
     }
     return "?";
 }
 
 std::optional<CacheKind> parseCacheKind(std::string_view s) {
-    for (CacheKind k : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker})
+    for (CacheKind k : allCacheKinds())
         if (toString(k) == s) return k;
     return std::nullopt;
 }
@@ -110,7 +111,8 @@ std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
     switch (kind) {
         case CacheKind::None: return std::make_unique<NoCache>(scene, search);
         case CacheKind::Cylinder: return std::make_unique<CylinderCache>(scene, search);
-        case CacheKind::Blocker: return std::make_unique<BlockerCache>(scene, search);
+        case CacheKind::Blocker: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Paper);
+        case CacheKind::BlockerPlus: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Plus);
     }
     return nullptr;
 }

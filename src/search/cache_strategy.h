@@ -2,6 +2,7 @@
 /// \file
 /// \brief The three interchangeable answers to "what does this ray hit first?": no cache,
 /// the Speer-DeRose-Barsky cylinder of safety, and Hanrahan's blocker lists.
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,8 +15,17 @@
 namespace rc {
 
 /// Which cache answers ray queries.
-enum class CacheKind { None, Cylinder, Blocker };
+enum class CacheKind {
+    None,         ///< every ray searches
+    Cylinder,     ///< Speer, DeRose and Barsky's cylinder of safety
+    Blocker,      ///< Hanrahan's blocker lists, exactly as the paper describes them
+    BlockerPlus,  ///< blocker lists with RayCache's additions (`blocker+`)
+};
 std::string_view toString(CacheKind k);
+/// Every cache kind, in the order tables list them.
+inline constexpr std::array<CacheKind, 4> kCacheKinds{CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker,
+                                                      CacheKind::BlockerPlus};
+inline constexpr const std::array<CacheKind, 4>& allCacheKinds() { return kCacheKinds; }
 std::optional<CacheKind> parseCacheKind(std::string_view s);
 
 /// How far a lookup may go.

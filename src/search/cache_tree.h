@@ -27,6 +27,8 @@ struct CacheEntry {
     SafetyCylinder cylinder;   ///< around the last segment (radius < 0: none)
     Vec3 coneAxis{0.0};        ///< empty cone around the last empty eye ray
     double coneAngle = -1.0;   ///< its half-angle in radians (< 0: none)
+    double coneCos = 2.0;      ///< cos(coneAngle), for the test without trigonometry
+    double coneSin = 0.0;      ///< sin(coneAngle)
     bool pending = false;      ///< cylinder or cone not built yet: built when the entry is next used
     int blockerOrigin = -1;    ///< the site pair of the blocker list in use (for display)
     int blockerTarget = -1;

@@ -1,8 +1,10 @@
 #include "search/embree_search.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <embree3/rtcore.h>
@@ -32,7 +34,9 @@ void skipOrigin(const RTCFilterFunctionNArguments* args) {
         if (id != origin) continue;
         // Leaving the surface it starts on: no hit; entering a sphere: only the far side
         const float t = RTCRayN_tfar(args->ray, args->N, i);
-        if (!sphere || !ctx->query->origin.inside || t < 1e-4f * float(1.0 + std::abs(ctx->query->ray.o.x)))
+        const Vec3& o = ctx->query->ray.o;
+        const double size = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)});
+        if (!sphere || !ctx->query->origin.inside || t < 1e-4f * float(1.0 + size))
             args->valid[i] = 0;
     }
 }
@@ -47,7 +51,22 @@ struct EmbreeSearch::Impl {
     explicit Impl(const Scene& s) : scene(s) {}
 };
 
-EmbreeSearch::EmbreeSearch(const Scene& scene) : CompleteSearch(scene), impl_(std::make_unique<Impl>(scene)) {
+namespace {
+/// Embree is given spheres and fans of triangles: a cone or a concave polygon has no fan.
+const Scene& supported(const Scene& scene) {
+    const auto cones = scene.cones.size();
+    const auto concave = std::count_if(scene.polygons.begin(), scene.polygons.end(),
+                                       [](const Polygon& p) { return !p.convex; });
+    if (cones > 0 || concave > 0)
+        throw std::invalid_argument("--accel embree takes spheres and convex polygons only; this scene has " +
+                                    std::to_string(cones) + " cones or cylinders (c) and " +
+                                    std::to_string(concave) + " concave polygons: use --accel bvh");
+    return scene;
+}
+}  // namespace
+
+EmbreeSearch::EmbreeSearch(const Scene& scene)
+    : CompleteSearch(supported(scene)), impl_(std::make_unique<Impl>(scene)) {
     Impl& m = *impl_;
     m.device = rtcNewDevice("threads=1");
     if (!m.device) throw std::runtime_error("embree: cannot create a device");

@@ -28,7 +28,7 @@ public:
         for (std::size_t i = begin; i < end; ++i) {
             const int id = ids_[i];
             if (radius2_[i] < 0.0 || id == q.origin.object) {
-                testObject(scene, q, id, best, n);  // a polygon, or the surface the ray leaves
+                testObject(scene, q, id, best, n);  // a polygon, a cone, or the surface the ray leaves
                 continue;
             }
             // The stable discriminant, as sphereRootsStable() computes it
@@ -49,7 +49,7 @@ public:
 private:
     std::vector<int> ids_;
     std::vector<double> x_, y_, z_;
-    std::vector<double> radius2_;  ///< r * r; negative for a polygon
+    std::vector<double> radius2_;  ///< r * r; negative for a polygon or a cone
 };
 
 }  // namespace rc

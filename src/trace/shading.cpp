@@ -41,9 +41,10 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     // Shade the side the ray arrives on
     const Vec3 n = glm::dot(outward, q.ray.d) > 0.0 ? -outward : outward;
     const bool sphere = obj.shape == Shape::Sphere;
-    // Does a ray leaving p in direction d go into the object?
+    // May a ray leaving p in direction d meet this object again? Into a sphere, yes; out
+    // of a sphere or off a polygon, no (convexity); off a cone, it may (it is open)
     auto origin = [&](const Vec3& d) {
-        return RayOrigin{hit.object, sphere && glm::dot(d, outward) < 0.0};
+        return RayOrigin{hit.object, sphere ? glm::dot(d, outward) < 0.0 : obj.shape == Shape::Cone};
     };
     auto spawn = [&](RayKind kind, int light, const Ray& ray, double tmax, const Vec3& weight) {
         RayTask c;
@@ -89,7 +90,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     // Refraction, weighted by Kt; total internal reflection turns it back inside
     const Vec3 wt = task.weight * m.kt;
     if (m.kt > 0.0 && maxComponent(wt) >= opt.cutoff && maxComponent(wt) > 0.0) {
-        Vec3 d = q.ray.d;  // a polygon is a thin sheet: straight through
+        Vec3 d = q.ray.d;  // a polygon or a cone is a thin sheet: straight through
         if (sphere) {
             const bool entering = glm::dot(q.ray.d, outward) < 0.0;
             const double eta = entering ? 1.0 / m.ior : m.ior;
