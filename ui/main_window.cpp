@@ -56,7 +56,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (const SessionState* s = controller_.state()) overlayPainter_.paint(p, *s, overlays_, selection_, scale);
     });
     view_->setLegendHook([this](QPainter& p, const QRectF& area) {
-        if (const SessionState* s = controller_.state()) overlayPainter_.paintLegend(p, *s, overlays_, selection_, area);
+        if (const SessionState* s = controller_.state()) {
+            const QRectF image(view_->imageToWidget(QPointF(0, 0)),
+                               view_->imageToWidget(QPointF(view_->image().width(), view_->image().height())));
+            overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, image);
+        }
     });
     connect(view_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
     connect(view_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
@@ -197,7 +201,8 @@ void MainWindow::buildToolbars() {
     cancelAct_ = step->addAction("Cancel", this, &MainWindow::cancelRun);
     cancelAct_->setShortcut(Qt::Key_Escape);
 
-    // What to show
+    // What to show: a row of its own, so that nothing spills into an overflow menu
+    addToolBarBreak();
     QToolBar* show = addToolBar("Show");
     show->setObjectName("show");
     auto box = [&](const QString& label, const QString& tip, bool Overlays::*field) {
@@ -217,6 +222,7 @@ void MainWindow::buildToolbars() {
     frontierBox_ = box("Frontier", "Breadth-first queue, deferred seeds and regions", &Overlays::frontier);
     missesBox_ = box("Misses", "Where misses happened, coloured by reason", &Overlays::misses);
     gridBox_ = box("Grid", "Pixel grid at high zoom", &Overlays::grid);
+    legendBox_ = box("Legend", "The colour key (beside the image when there is room)", &Overlays::legend);
     const QList<QAction*> shown = show->actions();
     cylinderAct_ = shown.value(0);
     hullAct_ = shown.value(1);
@@ -235,6 +241,12 @@ void MainWindow::buildToolbars() {
     large->setCheckable(true);
     large->setToolTip("Bigger text for a projector");
     connect(large, &QAction::toggled, this, &MainWindow::setLargeFonts);
+    presentAct_ = show->addAction("Present");
+    presentAct_->setCheckable(true);
+    presentAct_->setShortcut(Qt::Key_F11);
+    presentAct_->setToolTip("Presentation mode: hide the panels, large fonts (F11)");
+    connect(presentAct_, &QAction::toggled, this, &MainWindow::setPresentation);
+    largeAct_ = large;
     QAction* fit = show->addAction("Fit", view_, &ImageView::fit);
     fit->setToolTip("Fit the image to the window (F)");
 }
@@ -414,7 +426,8 @@ void MainWindow::setOverlays(const Overlays& o) {
     const double lineScale = overlays_.lineScale;
     overlays_ = o;
     overlays_.lineScale = lineScale;
-    const QSignalBlocker b1(cylinderBox_), b2(hullBox_), b3(frontierBox_), b4(missesBox_), b5(gridBox_);
+    const QSignalBlocker b1(cylinderBox_), b2(hullBox_), b3(frontierBox_), b4(missesBox_), b5(gridBox_), b6(legendBox_);
+    legendBox_->setChecked(o.legend);
     cylinderBox_->setChecked(o.cylinder);
     hullBox_->setChecked(o.hull);
     frontierBox_->setChecked(o.frontier);
@@ -426,11 +439,26 @@ void MainWindow::setOverlays(const Overlays& o) {
 
 void MainWindow::setHeatmap(Heatmap h) {
     heatmap_ = h;
+    overlayPainter_.setHeatmap(h);
     heatmapBox_->setCurrentIndex(heatmapBox_->findData(int(h)));
     refresh();
 }
 
+void MainWindow::setPresentation(bool on) {
+    if (presentAct_ && presentAct_->isChecked() != on) {
+        presentAct_->setChecked(on);  // comes back here through toggled()
+        return;
+    }
+    for (QDockWidget* d : findChildren<QDockWidget*>()) d->setVisible(!on);
+    for (QToolBar* t : findChildren<QToolBar*>())
+        if (t->objectName() == "render") t->setVisible(!on);
+    if (largeAct_) largeAct_->setChecked(on);
+    else setLargeFonts(on);
+    view_->fit();
+}
+
 void MainWindow::setLargeFonts(bool on) {
+    if (stats_) stats_->setLargeFonts(on);
     overlays_.lineScale = on ? 1.8 : 1.0;
     QFont f = QApplication::font();
     f.setPointSizeF(on ? 16.0 : 10.0);

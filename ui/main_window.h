@@ -67,6 +67,8 @@ public:
     const Overlays& overlays() const { return overlays_; }
     void setHeatmap(Heatmap h);
     void setLargeFonts(bool on);
+    /// Presentation mode: the panels and the render toolbar hidden, large fonts.
+    void setPresentation(bool on);
     /// Selects a pixel to inspect (-1, -1 clears).
     void selectPixel(int x, int y);
     /// Puts a ray worth showing in focus: the newest eye ray that hit an object whose
@@ -132,7 +134,8 @@ private:
     QComboBox *sceneBox_ = nullptr, *cacheBox_ = nullptr, *orderBox_ = nullptr, *sizeBox_ = nullptr, *accelBox_ = nullptr,
               *heatmapBox_ = nullptr;
     QCheckBox *cylinderBox_ = nullptr, *hullBox_ = nullptr, *frontierBox_ = nullptr, *missesBox_ = nullptr,
-              *gridBox_ = nullptr;
+              *gridBox_ = nullptr, *legendBox_ = nullptr;
+    QAction *presentAct_ = nullptr, *largeAct_ = nullptr;
     /// The toolbar actions of the overlay boxes: hidden when the session cannot use them
     QAction *cylinderAct_ = nullptr, *hullAct_ = nullptr, *frontierAct_ = nullptr, *missesAct_ = nullptr;
     QSlider* speed_ = nullptr;

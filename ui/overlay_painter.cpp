@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include <QLinearGradient>
 #include <QPainterPath>
 
 #include "palette.h"
@@ -267,7 +268,7 @@ void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scal
 }
 
 void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
-                                 const QRectF& area) {
+                                 const QRectF& area, const QRectF& image) {
     QStringList caption;
     std::vector<std::pair<QColor, QString>> keys;
     const rc::RenderSession& session = s.session();
@@ -333,40 +334,97 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
 
     if (!o.legend) keys.clear();
+    // A key that would cover much of the image gets a smaller font (untick Legend to hide it)
+    const double rows = double(keys.size() + caption.size()) + 4;
+    const double room = std::max(image.left() - area.left(), area.right() - image.right());
+    if (room < 250 && rows * (QFontMetricsF(p.font()).height() + 2) > 0.55 * area.height()) {
+        QFont small = p.font();
+        const double f = std::max(0.6, 0.55 * area.height() / (rows * (QFontMetricsF(small).height() + 2)));
+        small.setPointSizeF(small.pointSizeF() * f);
+        p.setFont(small);
+    }
     const QFontMetricsF fm(p.font());
     const double lh = fm.height() + 2;
     p.setRenderHint(QPainter::Antialiasing, true);
-    // The caption at the top left
     double cw = 0;
     for (const QString& c : caption) cw = std::max(cw, fm.horizontalAdvance(c));
-    QRectF top(area.left() + 8, area.top() + 8, cw + 16, lh * caption.size() + 8);
-    p.setPen(Qt::NoPen);
-    p.setBrush(QColor(0, 0, 0, 175));
-    p.drawRoundedRect(top, 6, 6);
-    p.setPen(Qt::white);
-    double y = top.top() + 4;
-    for (const QString& c : caption) {
-        p.drawText(QRectF(top.left() + 8, y, cw, lh), Qt::AlignVCenter | Qt::AlignLeft, c);
-        y += lh;
-    }
-    if (keys.empty()) return;
-    // The colour key at the bottom left
     double kw = 0;
     for (const auto& k : keys) kw = std::max(kw, fm.horizontalAdvance(k.second) + lh * 1.3);
-    QRectF box(area.left() + 8, area.bottom() - 8 - (lh * keys.size() + 8), kw + 16, lh * keys.size() + 8);
+    // A heatmap's colour bar, with values
+    const bool bar = o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder);
+    double top = 0;
+    if (bar) {
+        const TraceRecorder& rec = s.recorder();
+        if (heatmap_ == Heatmap::Tests) {
+            for (int px = 0; px < s.width() * s.height(); ++px) top = std::max(top, double(rec.testsAt(px)));
+            top = std::max(top, 1.0);
+        } else {
+            top = std::max(1.0, double(s.session().steps()));
+        }
+        kw = std::max(kw, std::max(220.0, fm.horizontalAdvance(heatmap_ == Heatmap::Tests ? "tests per pixel (log scale)" : "step of a pixel's first ray") + 16));
+    }
+    const double barHeight = bar ? lh * 3.2 : 0.0;
+    const double keyHeight = lh * double(keys.size()) + 8 + barHeight;
+    // Beside the image when a margin has room, else over it (caption top left, key bottom left)
+    const double leftRoom = image.left() - area.left(), rightRoom = area.right() - image.right();
+    QRectF capBox(area.left() + 8, area.top() + 8, cw + 16, lh * caption.size() + 8);
+    QRectF keyBox(area.left() + 8, area.bottom() - 8 - keyHeight, kw + 16, keyHeight);
+    if (rightRoom >= kw + 32) {
+        keyBox.moveTopLeft(QPointF(image.right() + 8, std::max(area.top() + 8, image.top())));
+        if (rightRoom >= cw + 32 && keyBox.bottom() + capBox.height() + 8 < area.bottom()) {
+            capBox.moveTopLeft(keyBox.topLeft());
+            keyBox.moveTop(capBox.bottom() + 8);
+        }
+    } else if (leftRoom >= kw + 32) {
+        keyBox.moveTopLeft(QPointF(area.left() + 8, std::max(area.top() + 16, image.top()) + capBox.height()));
+    }
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
-    p.drawRoundedRect(box, 6, 6);
-    y = box.top() + 4;
+    p.drawRoundedRect(capBox, 6, 6);
+    p.setPen(Qt::white);
+    double y = capBox.top() + 4;
+    for (const QString& c : caption) {
+        p.drawText(QRectF(capBox.left() + 8, y, cw, lh), Qt::AlignVCenter | Qt::AlignLeft, c);
+        y += lh;
+    }
+    legendKey_ = QRectF();
+    if (keys.empty() && !bar) return;
+    legendKey_ = keyBox;
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 175));
+    p.drawRoundedRect(keyBox, 6, 6);
+    y = keyBox.top() + 4;
     for (const auto& [colour, text] : keys) {
         if (colour.alpha() > 0) {
             p.setPen(QPen(Qt::black, 1));
             p.setBrush(colour);
-            p.drawRect(QRectF(box.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
+            p.drawRect(QRectF(keyBox.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
         }
         p.setPen(Qt::white);
-        p.drawText(QRectF(box.left() + 8 + lh * 1.3, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft, text);
+        p.drawText(QRectF(keyBox.left() + 8 + lh * 1.3, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft, text);
         y += lh;
+    }
+    if (!bar) return;
+    p.setPen(Qt::white);
+    p.drawText(QRectF(keyBox.left() + 8, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft,
+               heatmap_ == Heatmap::Tests ? "tests per pixel (log scale)" : "step of a pixel's first ray");
+    y += lh;
+    const QRectF strip(keyBox.left() + 8, y + 2, kw - 16, lh * 0.8);
+    QLinearGradient g(strip.topLeft(), strip.topRight());
+    for (int k = 0; k <= 16; ++k) g.setColorAt(k / 16.0, palette::ramp(k / 16.0));
+    p.setPen(QPen(Qt::black, 1));
+    p.setBrush(g);
+    p.drawRect(strip);
+    y += lh;
+    p.setPen(Qt::white);
+    for (int k = 0; k <= 4; ++k) {
+        const double t = k / 4.0;
+        const double v = heatmap_ == Heatmap::Tests ? std::expm1(t * std::log1p(top)) : t * top;
+        const QString label = QString::number(v, 'f', v < 10 ? 1 : 0);
+        const double x = strip.left() + t * strip.width();
+        const double wdt = fm.horizontalAdvance(label);
+        const double lx = std::clamp(x - wdt / 2, strip.left(), strip.right() - wdt);
+        p.drawText(QRectF(lx, y, wdt + 2, lh), Qt::AlignVCenter | Qt::AlignLeft, label);
     }
 }
 

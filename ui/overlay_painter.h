@@ -30,8 +30,14 @@ public:
     /// widget pixels per image pixel, so marks keep a readable size at any zoom.
     void paint(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel, double scale);
     /// Paints the caption and colour key in widget coordinates inside `area`.
+    /// The key goes beside `image` (its rectangle in widget coordinates) when a margin
+    /// has room, else over it.
     void paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
-                     const QRectF& area);
+                     const QRectF& area, const QRectF& image);
+    /// The heatmap shown, for its colour bar in the key.
+    void setHeatmap(Heatmap h) { heatmap_ = h; }
+    /// Where the last key was drawn (widget coordinates; empty: none).
+    const QRectF& legendKey() const { return legendKey_; }
 
 private:
     void paintFocus(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f,
@@ -49,6 +55,8 @@ public:
 
 private:
     PaintWork work_;
+    Heatmap heatmap_ = Heatmap::None;
+    QRectF legendKey_;
     double lineScale_ = 1.0;
     std::uint64_t cachedState_ = 0;  ///< SessionState::serial() of the cached layer
     std::size_t cachedEvents_ = 0;

@@ -96,6 +96,29 @@ void StatsPanel::refresh(const SessionState* state) {
     axisX_->setRange(0, std::max<double>(1.0, double(s.steps())));
     axisY_->setRange(0, std::max<double>(1.0, double(std::max(n.hits, n.misses)) * 1.05));
     axisTests_->setRange(0, std::max<double>(1.0, double(n.intersectionTests) * 1.05));
+    // Round ticks, each label different (no "0 0 1 1 1" on small ranges)
+    for (QValueAxis* a : {axisX_, axisY_, axisTests_}) {
+        a->setTickCount(5);
+        a->applyNiceNumbers();
+        a->setLabelFormat(a->max() < 8 ? "%.1f" : "%.0f");
+    }
+}
+
+void StatsPanel::setLargeFonts(bool on) {
+    QFont f = font();
+    f.setPointSizeF(on ? 12.0 : 9.0);
+    QFont title = f;
+    title.setBold(true);
+    for (QValueAxis* a : {axisX_, axisY_, axisTests_}) {
+        a->setLabelsFont(f);
+        a->setTitleFont(title);
+    }
+    chart_->legend()->setFont(f);
+    for (QLineSeries* s : {hits_, misses_, tests_}) {
+        QPen pen = s->pen();
+        pen.setWidthF(on ? 3.5 : 2.0);
+        s->setPen(pen);
+    }
 }
 
 }  // namespace rcgui

@@ -18,6 +18,8 @@ class StatsPanel : public QWidget {
     Q_OBJECT
 public:
     explicit StatsPanel(QWidget* parent = nullptr);
+    /// Axis labels, titles, legend and line widths for a projector (or back).
+    void setLargeFonts(bool on);
     /// Refreshes from `state` (null: a worker is running; shows only `steps`).
     void refresh(const SessionState* state);
     /// While a worker runs: the step count it reported.

@@ -18,6 +18,7 @@
 #include "main_window.h"
 #include "projector.h"
 #include "ray_focus.h"
+#include "ray_tree_panel.h"
 #include "scene/builtin_scenes.h"
 #include "screenshot.h"
 
@@ -383,4 +384,27 @@ TEST_CASE("A bad --select or --accel keeps the scene and says why", "[gui][cli]"
     REQUIRE(errText.contains("outside"));
     REQUIRE(w.scene() != nullptr);
     REQUIRE(w.scene()->name == "pair");
+}
+
+TEST_CASE("The key sits beside the image when there is room; presentation mode hides the panels", "[gui][layout]") {
+    Window f("pair");
+    for (int i = 0; i < 2000; ++i) f.w.stepRay();
+    f.w.setOverlays(*Overlays::parse("all"));
+    f.w.setHeatmap(Heatmap::Tests);
+    f.w.setPresentation(true);
+    f.w.resize(2400, 900);
+    QApplication::processEvents();
+    f.w.imageView()->fit();
+    f.paint();
+    const ImageView& v = *f.w.imageView();
+    const QRectF image(v.imageToWidget(QPointF(0, 0)), v.imageToWidget(QPointF(v.image().width(), v.image().height())));
+    const QRectF key = f.w.overlayPainter().legendKey();
+    REQUIRE(!key.isEmpty());
+    REQUIRE_FALSE(key.intersects(image));
+    REQUIRE_FALSE(f.w.rayTreePanel()->isVisible());
+    REQUIRE(f.w.overlays().lineScale > 1.0);  // presentation uses large fonts and thicker lines
+    f.w.setPresentation(false);
+    QApplication::processEvents();
+    REQUIRE(f.w.rayTreePanel()->isVisible());
+    REQUIRE(f.w.overlays().lineScale == 1.0);
 }

@@ -289,17 +289,17 @@ TEST_CASE("The frontier overlay marks queued pixels", "[gui][overlay]") {
         if (i > 2000 && !(fr = f.state().session().order().frontier()).queued.empty()) break;
     }
     REQUIRE(!fr.queued.empty());
+    const int w = f.state().width();
+    const int px = fr.queued.back();
+    // Centre the view on it, away from the caption at the top left
+    ImageView& view = *f.w.imageView();
+    const QPointF centre(px % w + 0.5, px / w + 0.5);
+    view.setZoom(view.zoom(), QPointF(view.width() / 2.0, view.height() / 2.0) - view.zoom() * centre);
     f.w.setOverlays(only(nullptr));
     const QImage plain = f.grabView();
     f.w.setOverlays(only(&Overlays::frontier));
     const QImage drawn = f.grabView();
-    const int w = f.state().width();
-    // The queued pixel farthest from the caption (top left)
-    int px = fr.queued.back();
-    for (int q : fr.queued)
-        if (q % w + q / w > px % w + px / w) px = q;
-    const QPointF at = f.w.imageView()->imageToWidget(QPointF(px % w + 0.5, px / w + 0.5));
-    INFO("at " << at.x() << "," << at.y() << " px " << px % w << "," << px / w << " queued " << fr.queued.size());
+    const QPointF at = view.imageToWidget(centre);
     REQUIRE(colourDistance(drawn.pixelColor(at.toPoint()), palette::kQueued) < 40);
     REQUIRE(colourDistance(plain.pixelColor(at.toPoint()), palette::kQueued) > 40);
 }
