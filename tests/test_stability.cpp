@@ -117,7 +117,9 @@ TEST_CASE("intersection table: textbook fails where the stable formula holds", "
     // Offset 1e7: a float cannot hold the positions, whatever the formula
     CHECK(row("r=1 at 1e7 offset", "stable", "float").maxRelError > 1e-3);
     CHECK(row("r=1 at 1e7 offset", "stable", "double").maxRelError < 1e-8);
-    for (const IntersectionRow& r : rows) CHECK(r.nsPerTest > 0.0);
+    // The same formula in float loses digits double keeps on the ordinary case too
+    CHECK(row("control: r=1 at 5", "stable", "float").maxRelError >
+          row("control: r=1 at 5", "stable", "double").maxRelError);
 }
 
 TEST_CASE("long double references agree with the double routines on ordinary rays", "[stability][intersection]") {
@@ -155,9 +157,9 @@ TEST_CASE("pixel offsets: zero leaves the image alone, averages of jittered rend
     const LinearImage reference = averageImage(scene, o, gridOffsets(6));
     const std::vector<SupersamplePoint> curve = superSample(scene, o, jitterOffsets(16, 3), reference);
     REQUIRE(curve.size() == 5);  // 1, 2, 4, 8, 16
+    CHECK(curve.front().spp == 1);
     CHECK(curve.back().spp == 16);
     CHECK(curve.back().rmse < curve.front().rmse);
-    CHECK(curve.back().seconds >= curve.front().seconds);
 }
 
 TEST_CASE("progress of a render: from a black image to the final one", "[stability][convergence]") {
