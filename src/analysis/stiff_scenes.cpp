@@ -2,28 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 
 #include <glm/geometric.hpp>
 
 #include "scene/builtin_scenes.h"
 #include "scene/nff_reader.h"
+#include "scene/random.h"
 
 namespace rc {
 
 namespace {
 
-/// Portable random doubles in [0, 1) (no library distribution: same on every machine).
-class Unit {
-public:
-    explicit Unit(std::uint64_t seed) : gen_(seed) {}
-    double operator()() { return double(gen_() >> 11) * 0x1.0p-53; }
-
-private:
-    std::mt19937_64 gen_;
-};
 
 int material(Scene& s, Vec3 color, double kd, double ks, double shine, double kt = 0.0, double ior = 1.0) {
     return s.addMaterial({color, kd, ks, shine, kt, ior});
@@ -169,7 +161,7 @@ Scene radiusSpan() {
                         material(s, Vec3(0.9, 0.9, 1.0), 0.2, 0.8, 80.0),
                         material(s, Vec3(1.0), 0.05, 0.15, 100.0, 0.85, 1.5)};
     view(s, Vec3(0.3, 0.8, 6), Vec3(0, 0, 0), 45.0);
-    Unit u(1986);
+    Random u(1986);
     for (int i = 0; i < 48; ++i) {
         const Vec3 c(4 * u() - 2, 4 * u() - 2, 4 * u() - 2);
         const double r = std::pow(10.0, -4.0 + 4.0 * u()) * 0.8;
@@ -231,10 +223,14 @@ std::vector<StiffScene> loadStiffSuite(const std::string& dir) {
 }
 
 std::string defaultStiffSuiteDir() {
-    // This file lives in src/analysis of the source tree; the suite in tests/stiff
-    const std::filesystem::path here(__FILE__);
-    if (!here.is_absolute()) return "";
-    const std::filesystem::path dir = here.parent_path().parent_path().parent_path() / "tests" / "stiff";
+    // The environment's RAYCACHE_STIFF_DIR, else the folder CMake was configured with
+    const char* env = std::getenv("RAYCACHE_STIFF_DIR");
+#ifdef RAYCACHE_STIFF_DIR
+    const std::filesystem::path dir = env && *env ? env : RAYCACHE_STIFF_DIR;
+#else
+    if (!env || !*env) return "";
+    const std::filesystem::path dir = env;
+#endif
     std::error_code ec;
     return std::filesystem::is_directory(dir, ec) ? dir.string() : "";
 }

@@ -33,8 +33,9 @@ Scene makeStiffScene(const std::string& name);
 /// \throws SceneError when a file cannot be read.
 std::vector<StiffScene> loadStiffSuite(const std::string& dir);
 
-/// The suite directory of the source tree this binary was built from, or "" when it is
-/// not there any more.
+/// The suite directory: the environment's RAYCACHE_STIFF_DIR, else the one CMake was
+/// configured with (RAYCACHE_STIFF_DIR, by default tests/stiff of the source tree); ""
+/// when it is not there.
 std::string defaultStiffSuiteDir();
 
 }  // namespace rc
