@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <random>
+
+#include "scene/random.h"
 
 namespace rc {
 
@@ -72,8 +73,8 @@ std::vector<ProgressPoint> traceProgress(std::shared_ptr<const Scene> scene, con
 }
 
 std::vector<glm::dvec2> jitterOffsets(int n, std::uint64_t seed) {
-    std::mt19937_64 g(seed);
-    const double sx = double(g() >> 11) * 0x1.0p-53, sy = double(g() >> 11) * 0x1.0p-53;
+    Random g(seed);
+    const double sx = g.unit(), sy = g.unit();
     std::vector<glm::dvec2> out;
     for (int i = 0; i < n; ++i) {
         const double x = std::fmod(halton(i + 1, 2) + sx, 1.0), y = std::fmod(halton(i + 1, 3) + sy, 1.0);

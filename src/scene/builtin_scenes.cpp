@@ -4,12 +4,12 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <random>
 #include <system_error>
 
 #include <glm/geometric.hpp>
 
 #include "scene/nff_reader.h"
+#include "scene/random.h"
 
 namespace rc {
 
@@ -18,19 +18,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxCube = 64;
 
-/// Portable random doubles: mt19937_64's output sequence is fixed by the standard, and
-/// the conversion to [0, 1) is done here, not by a library distribution.
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : gen_(seed) {}
-    /// Uniform in [0, 1), 53 random bits.
-    double unit() { return double(gen_() >> 11) * 0x1.0p-53; }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
-    int index(int n) { return int(unit() * n); }
-
-private:
-    std::mt19937_64 gen_;
-};
 
 const std::array<Vec3, 5> kPalette = {Vec3(0.90, 0.30, 0.25), Vec3(0.30, 0.80, 0.35),
                                       Vec3(0.30, 0.45, 0.90), Vec3(0.95, 0.80, 0.30),
