@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QHelpEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 #include <QWheelEvent>
 
 namespace rcgui {
@@ -109,6 +111,18 @@ void ImageView::mouseMoveEvent(QMouseEvent* e) {
         update();
     }
     lastPos_ = e->position();
+}
+
+bool ImageView::event(QEvent* e) {
+    if (e->type() == QEvent::ToolTip) {
+        auto* help = static_cast<QHelpEvent*>(e);
+        const auto px = pixelAt(QPointF(help->pos()));
+        const QString text = px ? tooltipAt(px->x(), px->y()) : QString();
+        if (text.isEmpty()) QToolTip::hideText();
+        else QToolTip::showText(help->globalPos(), text, this);
+        return true;
+    }
+    return QWidget::event(e);
 }
 
 void ImageView::mouseReleaseEvent(QMouseEvent* e) {

@@ -27,6 +27,11 @@ public:
     const QImage& image() const { return image_; }
     void setOverlayHook(OverlayHook hook) { overlay_ = std::move(hook); }
     void setLegendHook(LegendHook hook) { legend_ = std::move(hook); }
+    /// Text of the hover tooltip of image pixel (x, y) (empty: none).
+    using TooltipHook = std::function<QString(int x, int y)>;
+    void setTooltipHook(TooltipHook hook) { tooltip_ = std::move(hook); }
+    /// The tooltip the view shows over image pixel (x, y).
+    QString tooltipAt(int x, int y) const { return tooltip_ ? tooltip_(x, y) : QString(); }
     void setGridEnabled(bool on);
 
     double zoom() const { return zoom_; }
@@ -53,6 +58,7 @@ protected:
     void wheelEvent(QWheelEvent*) override;
     void mousePressEvent(QMouseEvent*) override;
     void mouseMoveEvent(QMouseEvent*) override;
+    bool event(QEvent* e) override;
     void mouseReleaseEvent(QMouseEvent*) override;
     void resizeEvent(QResizeEvent*) override;
     void keyPressEvent(QKeyEvent*) override;
@@ -61,6 +67,7 @@ private:
     QImage image_;
     OverlayHook overlay_;
     LegendHook legend_;
+    TooltipHook tooltip_;
     double zoom_ = 1.0;
     QPointF pan_{0, 0};
     bool fitted_ = false;  ///< follows the widget's size until the user zooms or pans

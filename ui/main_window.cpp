@@ -62,6 +62,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, image);
         }
     });
+    view_->setTooltipHook([this](int x, int y) -> QString {
+        const SessionState* s = controller_.state();
+        if (!s || x < 0 || y < 0 || x >= s->width() || y >= s->height()) return {};
+        const TraceRecorder& rec = s->recorder();
+        const int px = y * s->width() + x;
+        if (rec.firstVisit(px) < 0) return QString("pixel (%1,%2): not traced yet").arg(x).arg(y);
+        QString t = QString("pixel (%1,%2): %3 tests, %4 hits, %5 misses, first ray at step %6")
+                        .arg(x).arg(y).arg(rec.testsAt(px)).arg(rec.hitsAt(px)).arg(rec.missesAt(px))
+                        .arg(rec.firstVisit(px));
+        if (rec.missReasonAt(px) != rc::MissReason::None)
+            t += QString(", first miss: %1").arg(QString::fromUtf8(rc::toString(rec.missReasonAt(px)).data()));
+        return t;
+    });
     connect(view_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
     connect(view_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
 

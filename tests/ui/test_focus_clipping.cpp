@@ -408,3 +408,16 @@ TEST_CASE("The key sits beside the image when there is room; presentation mode h
     REQUIRE(f.w.rayTreePanel()->isVisible());
     REQUIRE(f.w.overlays().lineScale == 1.0);
 }
+
+TEST_CASE("Hovering a pixel tells its tests, hits and misses", "[gui][layout]") {
+    Window f("pair", rc::CacheKind::Blocker, rc::OrderKind::Scanline);
+    for (int i = 0; i < 3000; ++i) f.w.stepRay();
+    const SessionState& s = f.state();
+    const int px = s.recorder().events()[10].pixel;
+    const QString tip = f.w.imageView()->tooltipAt(px % s.width(), px / s.width());
+    REQUIRE(tip.contains(QString("%1 tests").arg(s.recorder().testsAt(px))));
+    REQUIRE(tip.contains(QString("%1 hits").arg(s.recorder().hitsAt(px))));
+    REQUIRE(tip.contains(QString("%1 misses").arg(s.recorder().missesAt(px))));
+    REQUIRE(f.w.imageView()->tooltipAt(s.width() - 1, s.height() - 1).contains("not traced"));
+    REQUIRE(f.w.imageView()->tooltipAt(-1, 0).isEmpty());
+}
