@@ -14,7 +14,8 @@
 
 namespace rc {
 
-/// No hit: the largest double. Distances compare naturally against it.
+/// No hit: positive infinity (not the largest finite double), so every distance compares
+/// below it and `t < kNoHit` means "hit".
 inline constexpr double kNoHit = std::numeric_limits<double>::infinity();
 
 /// The two roots `t0 <= t1` of a ray-sphere equation, when `hit`.
