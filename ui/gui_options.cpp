@@ -40,8 +40,10 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption select("select", "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray)", "x,y[:path]");
     const QCommandLineOption accel("accel", "linear | grid | bvh: what answers complete searches (default linear)", "kind");
     const QCommandLineOption zoom("zoom", "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel", "F");
+    const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
+    const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
     const QCommandLineOption large("large-fonts", "bigger text, for a projector");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, zoom, large})
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large})
         p.addOption(o);
     if (!p.parse(args)) {
         message = p.errorText();
@@ -93,6 +95,12 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         out.heatmap = *h;
     }
     if (p.isSet(screenshot)) out.screenshot = p.value(screenshot);
+    if (p.isSet(record)) out.record = p.value(record);
+    if (p.isSet(every)) {
+        bool ok = false;
+        out.every = p.value(every).toLongLong(&ok);
+        if (!ok || out.every < 1) { message = "--every must be a positive integer"; return ParseResult::Error; }
+    }
     if (p.isSet(window)) {
         int w = 0, h = 0;
         if (!parsePair(p.value(window).toLower(), 'x', w, h) || w < 200 || h < 200) { message = "--window must be WxH, at least 200x200"; return ParseResult::Error; }

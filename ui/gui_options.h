@@ -21,6 +21,8 @@ struct GuiOptions {
     Overlays overlays;
     Heatmap heatmap = Heatmap::None;
     QString screenshot;          ///< PNG to write, then exit
+    QString record;              ///< folder to write a numbered PNG sequence of the fill to, then exit
+    qint64 every = 10000;        ///< steps between recorded frames
     QSize window{1600, 1000};    ///< window size of screenshots
     QPoint select{-1, -1};       ///< pixel to inspect
     QString selectPath;          ///< its ray at this path (cache-tree label, e.g. eye/reflection); empty: the eye ray

@@ -32,12 +32,13 @@ int main(int argc, char** argv) {
     }
     const bool offscreen = qEnvironmentVariable("QT_QPA_PLATFORM") == "offscreen" ||
                            qEnvironmentVariable("QT_QPA_PLATFORM") == "minimal";
-    if (opt.screenshot.isEmpty() && noDisplay && offscreen) {
+    if (opt.screenshot.isEmpty() && opt.record.isEmpty() && noDisplay && offscreen) {
         opt.screenshot = "raycache-gui.png";
         out << "raycache-gui: no --screenshot given: writing " << opt.screenshot << Qt::endl;
     }
     QApplication app(argc, argv);
     QApplication::setApplicationName("raycache-gui");
+    if (!opt.record.isEmpty()) return rcgui::recordSequence(opt, out, err);
     if (!opt.screenshot.isEmpty()) return rcgui::renderScreenshot(opt, out, err);
 
     rcgui::MainWindow w;

@@ -1,6 +1,7 @@
 #include "screenshot.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QFileInfo>
 #include <QPixmap>
 
@@ -77,6 +78,45 @@ int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err) {
     const SessionState* s = w.controller().state();
     out << "raycache-gui: wrote " << QFileInfo(opts.screenshot).absoluteFilePath() << " (" << opts.scene << ", "
         << (s ? s->session().steps() : 0) << " steps, " << shot.width() << "x" << shot.height() << ")" << Qt::endl;
+    return 0;
+}
+
+}  // namespace rcgui
+
+namespace rcgui {
+
+int recordSequence(const GuiOptions& o, QTextStream& out, QTextStream& err) {
+    const QDir dir(o.record);
+    if (!QDir().mkpath(o.record)) {
+        err << "raycache-gui: cannot create " << o.record << Qt::endl;
+        return 1;
+    }
+    MainWindow w;
+    GuiOptions opts = o;
+    opts.steps = 0;
+    if (!applyOptions(w, opts, err)) return 2;
+    w.resize(opts.window);
+    w.show();
+    QApplication::processEvents();
+    w.imageView()->fit();
+    int frame = 0;
+    for (;;) {
+        SessionState* s = w.controller().state();
+        if (!s) break;
+        const bool more = s->runUntil(RunGoal::ToStep, s->session().steps() + o.every) && !s->session().done();
+        w.refresh();
+        QApplication::processEvents();
+        const QString file = dir.filePath(QString("frame_%1.png").arg(frame, 5, 10, QChar('0')));
+        if (!w.grab().save(file, "PNG")) {
+            err << "raycache-gui: cannot write " << file << Qt::endl;
+            return 1;
+        }
+        ++frame;
+        if (!more || frame >= kMaxRecordedFrames) break;
+    }
+    const SessionState* s = w.controller().state();
+    out << "raycache-gui: wrote " << frame << " frames to " << QFileInfo(o.record).absoluteFilePath() << " ("
+        << opts.scene << ", every " << o.every << " steps, " << (s ? s->session().steps() : 0) << " steps)" << Qt::endl;
     return 0;
 }
 

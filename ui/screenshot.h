@@ -18,4 +18,12 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err);
 /// bad scene, 1 when the PNG cannot be written.
 int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err);
 
+/// At most this many frames are recorded.
+inline constexpr int kMaxRecordedFrames = 10000;
+
+/// Records the fill as numbered PNGs (`o.record`/frame_00000.png, ...), one every
+/// `o.every` steps until the image is done, with the chosen overlays. Returns the exit
+/// status: 0, 1 when a file cannot be written, 2 for a bad scene.
+int recordSequence(const GuiOptions& o, QTextStream& out, QTextStream& err);
+
 }  // namespace rcgui

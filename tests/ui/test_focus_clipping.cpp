@@ -9,6 +9,7 @@
 #include <QDir>
 #include <QTextStream>
 #include <QElapsedTimer>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include <glm/geometric.hpp>
@@ -420,4 +421,26 @@ TEST_CASE("Hovering a pixel tells its tests, hits and misses", "[gui][layout]") 
     REQUIRE(tip.contains(QString("%1 misses").arg(s.recorder().missesAt(px))));
     REQUIRE(f.w.imageView()->tooltipAt(s.width() - 1, s.height() - 1).contains("not traced"));
     REQUIRE(f.w.imageView()->tooltipAt(-1, 0).isEmpty());
+}
+
+TEST_CASE("--record writes a numbered PNG sequence of the fill", "[gui][screenshot]") {
+    QTemporaryDir dir;
+    GuiOptions o;
+    QString msg;
+    REQUIRE(parseGuiOptions({"raycache-gui", "fill", "--record", dir.filePath("seq"), "--every", "1500", "--overlays", "all",
+                             "--window", "640x480"}, o, msg) == ParseResult::Ok);
+    REQUIRE(o.every == 1500);
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    REQUIRE(recordSequence(o, out, err) == 0);
+    const QStringList frames = QDir(dir.filePath("seq")).entryList({"frame_*.png"}, QDir::Files, QDir::Name);
+    // fill is 64x64: its rays come to a few thousand, so a handful of frames, the last complete
+    REQUIRE(frames.size() >= 2);
+    REQUIRE(frames.front() == "frame_00000.png");
+    REQUIRE(outText.contains(QString("wrote %1 frames").arg(frames.size())));
+    const QImage first(dir.filePath("seq/" + frames.front())), last(dir.filePath("seq/" + frames.back()));
+    REQUIRE(!first.isNull());
+    REQUIRE(first != last);
+    GuiOptions bad;
+    REQUIRE(parseGuiOptions({"raycache-gui", "--every", "0"}, bad, msg) == ParseResult::Error);
 }
