@@ -30,19 +30,24 @@ def config(r):
 
 
 md = ["Measured during this docs build with", "", "\\verbatim", command, "\\endverbatim", ""]
-md.append("Times are medians of interleaved repeats; *time* and *tests* are relative to "
-          "`none, scanline` (the paper's \"Not cached\"); *paper* is the paper's Table 1 figure "
-          "for the same cell, `-` where it has none.")
+md.append("<div>Times are medians of interleaved repeats; <i>time</i> and <i>tests</i> are relative to "
+          "<tt>none, scanline</tt> (the paper's \"Not cached\"); <i>paper</i> is the paper's Table 1 "
+          "figure for the same cell, <tt>-</tt> where it has none.</div>")
 md.append("")
 for scene, rs in scenes.items():
-    md.append(f"**{scene}** ({rs[0]['beam_nodes']} beam-tree nodes)")
+    # (an HTML paragraph: inside \\includedoc a Markdown paragraph runs into the table)
+    md.append(f"<div style=\"margin-top: 1em\"><b>{scene}</b> ({rs[0]['beam_nodes']} beam-tree nodes)</div>")
     md.append("")
-    md.append("| configuration | seconds | time | paper | tests | complete searches | searches per beam |")
-    md.append("|---|---:|---:|---:|---:|---:|---:|")
+    # HTML, not Markdown: inside \\includedoc a Markdown table floats beside the text
+    md.append('<div><table class="markdownTable">')
+    md.append("<tr class=\"markdownTableHead\"><th>configuration</th><th>seconds</th><th>time</th><th>paper</th>"
+              "<th>tests</th><th>complete searches</th><th>searches per beam</th></tr>")
     for r in rs:
-        md.append(f"| {config(r)} | {float(r['seconds']):.3f} | {float(r['time_ratio']):.2f} | "
-                  f"{r['paper_time_ratio']} | {float(r['tests_ratio']):.3f} | {r['complete_searches']} | "
-                  f"{float(r['searches_per_beam']):.2f} |")
+        md.append(f"<tr class=\"markdownTableBody\"><td>{config(r)}</td><td align=\"right\">{float(r['seconds']):.3f}</td>"
+                  f"<td align=\"right\">{float(r['time_ratio']):.2f}</td><td align=\"right\">{r['paper_time_ratio']}</td>"
+                  f"<td align=\"right\">{float(r['tests_ratio']):.3f}</td><td align=\"right\">{r['complete_searches']}</td>"
+                  f"<td align=\"right\">{float(r['searches_per_beam']):.2f}</td></tr>")
+    md.append("</table></div>")
     md.append("")
 
 
@@ -66,17 +71,17 @@ for scene, rs in scenes.items():
     if spb:
         searches.append((scene, min(spb, key=lambda c: c[1])))
 if alone:
-    md.append("**This build against the paper's claim.** Speed-up of caching alone (`blocker, "
+    md.append("<div><b>This build against the paper's claim.</b> Speed-up of caching alone (`blocker, "
               "scanline` against `none, scanline`): " +
               ", ".join(f"{s} {x:.2f}x" for s, x in alone) +
               " (the paper: 2-5 times). Further speed-up of breadth-first search (`blocker, bfs` "
               "against `blocker, scanline`): " + ", ".join(f"{s} {x:.2f}x" for s, x in bfs_gain) +
-              " (the paper: another 2-3 times). A speed-up below 1 is a slow-down.")
+              " (the paper: another 2-3 times). A speed-up below 1 is a slow-down.</div>")
     md.append("")
 if searches:
-    md.append("**Complete searches per beam**, the fewest of any cache in this build: " +
+    md.append("<div style=\"margin-top: 1em\"><b>Complete searches per beam</b>, the fewest of any cache in this build: " +
               ", ".join(f"{s} {c[1]:.2f} ({c[0]})" for s, c in searches) +
-              ". A cache with one entry per ray-tree path can hope for about 1.")
+              ". A cache with one entry per ray-tree path can hope for about 1.</div>")
     md.append("")
 md.append("\\image html table1_chart.png \"Time and intersection tests relative to no cache, "
           "per configuration and scene; black ticks: the paper's time\"")
