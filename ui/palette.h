@@ -4,7 +4,7 @@
 /// viewers (miss reasons use the Okabe-Ito palette).
 #include <QColor>
 
-#include "analysis/statistics.h"
+#include "search/counters.h"
 
 namespace rcgui::palette {
 

@@ -10,9 +10,9 @@
 #include <deque>
 #include <vector>
 
-#include "analysis/statistics.h"
 #include "scene/scene.h"
 #include "search/complete_search.h"
+#include "search/counters.h"
 #include "search/query.h"
 
 namespace rc {

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// \brief A ray-scene query and its answer: the nearest object hit, and where.
-#include "analysis/statistics.h"
 #include "geometry/intersection.h"
 #include "scene/scene.h"
+#include "search/counters.h"
 
 namespace rc {
 

@@ -1,4 +1,4 @@
-#include "analysis/statistics.h"
+#include "search/counters.h"
 
 #include <algorithm>
 
