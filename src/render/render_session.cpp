@@ -25,7 +25,7 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
       search_(makeCompleteSearch(options_.accel, *scene_)),
       verifier_(*scene_),
       strategy_(makeStrategy(options_.cache, *scene_, *search_)),
-      image_(options_.width, options_.height) {
+      image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {
     order_ = makeOrder(options_.order, options_.width, options_.rowBegin, options_.rowEnd, options_.band,
                        strategy_->caches(), [this](int pixel) {
                            ++primaries_;
