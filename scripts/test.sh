@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Install what is missing, build everything (core, CLI, GUI, tutorials, docs) and run the
-# whole test suite. Warnings in the docs fail the build. Then the core suite again under
-# AddressSanitizer and UBSan (preset asan), and a bounded fuzz run (RAYCACHE_FUZZ_SECONDS,
-# default 60; scripts/fuzz.sh runs longer).
+# whole test suite. Warnings in the docs fail the build. Then the core and threaded
+# suites again under AddressSanitizer and UBSan (preset asan), the threaded render tests
+# under ThreadSanitizer (preset tsan), and a bounded fuzz run (RAYCACHE_FUZZ_SECONDS,
+# default 60; scripts/fuzz.sh runs longer). Prints how long each stage took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -14,10 +15,23 @@ if cmake --build --preset default --target help | grep -q '^docs:'; then
 fi
 ctest --preset default -j "$jobs"
 
-# The core library, the CLI and raycache_tests under AddressSanitizer and UBSan
+stage() { echo "== $1: $((SECONDS - start)) s"; start=$SECONDS; }
+start=0
+stage "default build and tests"
+
+# The core library, the CLI, raycache_tests and the threaded tests under AddressSanitizer
+# and UBSan
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
 ctest --preset asan -j "$jobs"
+stage "asan"
+
+# The threaded render tests under ThreadSanitizer
+cmake --preset tsan >/dev/null
+cmake --build --preset tsan -j "$jobs"
+ctest --preset tsan -j "$jobs"
+stage "tsan"
 
 # libFuzzer on the NFF reader and on rendering what it accepts, bounded
 bash scripts/fuzz.sh "${RAYCACHE_FUZZ_SECONDS:-60}"
+stage "fuzz"
