@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli/commands.h"
+#include "cli/cpu_clock.h"
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "scene/builtin_scenes.h"
@@ -62,9 +63,9 @@ int bench(const BenchArgs& a) {
                 o.accel = run[c].accel;
                 o.cache = run[c].cache;
                 o.order = run[c].order;
-                const auto start = std::chrono::steady_clock::now();
+                const double start = processSeconds();
                 const ParallelRun result = renderParallel(scene, o, a.threads);
-                times[c].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                times[c].push_back(processSeconds() - start);
                 counts[c] = result.counters;
             }
         }

@@ -8,6 +8,7 @@
 
 #include "analysis/beam_tree.h"
 #include "cli/commands.h"
+#include "cli/cpu_clock.h"
 #include "render/output_files.h"
 #include "scene/builtin_scenes.h"
 
@@ -71,9 +72,9 @@ int table1(const Table1Args& a) {
                 BeamTreeBuilder builder(session.width(), session.height());
                 const bool wantBeams = r == 0 && c == 0;
                 if (wantBeams) session.addSink(&builder);
-                const auto start = std::chrono::steady_clock::now();
+                const double start = threadSeconds();
                 session.run();
-                times[c].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                times[c].push_back(threadSeconds() - start);
                 counts[c] = session.counters();
                 if (wantBeams) beams = builder.build();
             }

@@ -99,15 +99,17 @@ Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, 
         }
         return probeCylinder(q, e, n);
     }
-    // Blocker+: in front of a cheap search only the eye's empty cone pays: from an object
-    // the cone is narrow (its neighbours are near), and a grid, which cannot cull by
-    // direction, would need a cylinder walked cell by cell
+    // Blocker+: only the eye's empty cone pays. From an object the cone is narrow (its
+    // neighbours are near) and costs as much to build as a cylinder (measured: twice the
+    // builds for a tenth fewer searches on cube:5), so objects keep the paper's cylinder.
+    // In front of a cheap search an object's empty ray searches, and so does the eye's in
+    // front of a grid, which cannot cull by direction
     const bool cone = e.origin.object < 0 && search_.nearRadius() == kNoHit;
     if (search_.cheap() && !cone) return searchPast(q, &e, mode, n);
-    // The empty cone of directions around the last such ray, else (when an object touches
-    // the origin) the cylinder, built the first time the entry is used again
+    // The empty cone of directions around the last such ray, else the cylinder, built the
+    // first time the entry is used again
     if (e.pending) {
-        buildCone(e, n);
+        if (cone) buildCone(e, n);
         if (e.coneAngle < 0.0) buildCylinder(e, n);
         e.pending = false;
     }

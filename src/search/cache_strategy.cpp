@@ -64,26 +64,12 @@ void CacheStrategy::keepSegment(const Query& q, const Answer& a, CacheEntry& e) 
 
 void CacheStrategy::buildCylinder(CacheEntry& e, Counters& n) const {
     // [build-cylinder]
-    // The radius is the distance from the segment to the nearest other surface
-    struct Clearance final : SphereCull {
-        const CacheEntry& e;
-        Clearance(const CacheEntry& e, double cap) : e(e) {
-            a = e.cylinder.a;
-            b = e.cylinder.b;
-            radius = limit = cap;
-        }
-        // How near the segment a sphere inside s can come
-        double distance(const Sphere& s) override { return segmentDistance(s.c, a, b) - s.r; }
-        void found(int id, double d) override {
-            if (id == e.object) return;
-            if (id == e.origin.object && !e.origin.inside) return;  // cannot be met again
-            limit = std::min(limit, d);
-        }
-    };
-    // Only objects near the segment can set the radius; the search finds them (and may cap it)
-    Clearance clearance(e, search_.nearRadius());
-    search_.cull(clearance);
-    e.cylinder.radius = clearance.limit - slack_;
+    // The radius is the distance from the segment to the nearest other surface: every
+    // object's bounding sphere but the one hit and the one the ray cannot meet again.
+    // Only objects near the segment can set it; the search finds them (and may cap it)
+    const int leaving = e.origin.inside ? -1 : e.origin.object;
+    const double clear = search_.clearance(e.cylinder.a, e.cylinder.b, e.object, leaving, search_.nearRadius());
+    e.cylinder.radius = clear - slack_;
     // [build-cylinder]
     ++n.cylindersBuilt;
 }

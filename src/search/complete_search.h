@@ -42,6 +42,9 @@ public:
     /// Calls `c.found` for every object whose bounding sphere meets `c`. By default, measures
     /// every object.
     virtual void cull(SphereCull& c) const;
+    /// The least distance from segment a-b to the bounding sphere of any object but `skip`
+    /// and `skipToo`, at most `cap`: the radius of a cylinder of safety. By default, a cull.
+    virtual double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const;
     /// Cylinders of safety are capped at this radius, so that the objects near the segment
     /// (the cull's hint) are enough to build them (infinite: no cap). Where it is finite,
     /// cull() cannot find the objects near a direction cheaply, so the caches build no
@@ -61,6 +64,7 @@ class LinearSearch final : public CompleteSearch {
 public:
     explicit LinearSearch(const Scene& scene);
     Answer nearest(const Query& q, Counters& n) const override;
+    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override;
     std::string name() const override { return "linear"; }
     bool cheap() const override { return false; }
 

@@ -12,6 +12,7 @@ void SphereBatch::add(const Scene& scene, int id) {
     y_.push_back(s.c.y);
     z_.push_back(s.c.z);
     radius2_.push_back(sphere ? s.r * s.r : -1.0);
+    bound_.push_back(o.bound.r);
 }
 
 }  // namespace rc
