@@ -108,7 +108,7 @@ TEST_CASE("every cache in front of the bvh gives the linear image", "[bvh][exact
     }
 }
 
-TEST_CASE("in front of a hierarchy blocker+ stays cheap; the paper's blocker tests its long lists", "[bvh][bypass]") {
+TEST_CASE("in front of a hierarchy blocker+ stays cheap, the paper's blocker tests its long lists", "[bvh][bypass]") {
     // balls2: the ground polygon's bounding sphere meets every hull it is part of
     auto scene = std::make_shared<const Scene>(loadScene(std::string(RAYCACHE_SCENES_DIR) + "/balls2.nff"));
     auto tests = [&](AccelKind accel, CacheKind cache) {

@@ -75,7 +75,7 @@ TEST_CASE("no lights: no shadow rays, and left_out says so", "[left_out]") {
     CHECK_FALSE(has(left, "reflection rays"));
 }
 
-TEST_CASE("no Ks: no reflection rays; no T: no refraction rays", "[left_out]") {
+TEST_CASE("no Ks: no reflection rays, no T: no refraction rays", "[left_out]") {
     const Scene dull = twoSpheres(0.0, 0.0, true);
     const Counters n = render(dull);
     CHECK(n.rays[int(RayKind::Reflection)] == 0);
@@ -94,7 +94,7 @@ TEST_CASE("no Ks: no reflection rays; no T: no refraction rays", "[left_out]") {
     CHECK(leftOut(glass).empty());
 }
 
-TEST_CASE("depth 1 leaves out every secondary ray but shadows; blocker lists only for pairs met", "[left_out]") {
+TEST_CASE("depth 1 leaves out every secondary ray but shadows, blocker lists only for pairs met", "[left_out]") {
     const Scene s = twoSpheres(0.3, 0.6, true);
     RenderOptions o;
     o.shading.maxDepth = 1;

@@ -272,7 +272,7 @@ TEST_CASE("Focus rules: the selected ray, else the selected pixel's eye ray, els
     REQUIRE_FALSE(RayFocus::of(f.state(), f.w.selection()));
 }
 
-TEST_CASE("--select x,y:path and --accel parse; bad ones are errors", "[gui][cli][focus]") {
+TEST_CASE("The options select X Y PATH and accel parse and bad ones are errors", "[gui][cli][focus]") {
     GuiOptions o;
     QString msg;
     REQUIRE(parseGuiOptions({"raycache-gui", "--select", "3,4:eye/reflection", "--accel", "bvh"}, o, msg) == ParseResult::Ok);
@@ -387,7 +387,7 @@ TEST_CASE("A bad --select or --accel keeps the scene and says why", "[gui][cli]"
     REQUIRE(w.scene()->name == "pair");
 }
 
-TEST_CASE("The key sits beside the image when there is room; presentation mode hides the panels", "[gui][layout]") {
+TEST_CASE("The key sits beside the image when there is room, presentation mode hides the panels", "[gui][layout]") {
     Window f("pair");
     for (int i = 0; i < 2000; ++i) f.w.stepRay();
     f.w.setOverlays(*Overlays::parse("all"));
@@ -423,7 +423,7 @@ TEST_CASE("Hovering a pixel tells its tests, hits and misses", "[gui][layout]") 
     REQUIRE(f.w.imageView()->tooltipAt(-1, 0).isEmpty());
 }
 
-TEST_CASE("--record writes a numbered PNG sequence of the fill", "[gui][screenshot]") {
+TEST_CASE("The record option writes a numbered PNG sequence of the fill", "[gui][screenshot]") {
     QTemporaryDir dir;
     GuiOptions o;
     QString msg;

@@ -126,7 +126,7 @@ TEST_CASE("Step pixel stops on the first ray of another pixel", "[gui][step]") {
     for (std::size_t i = 0; i + 1 < events.size(); ++i) REQUIRE(events[i].pixel == first);
 }
 
-TEST_CASE("Next miss stops on a committed miss and puts it in focus; Next deferral on a deferral", "[gui][step][focus]") {
+TEST_CASE("Next miss stops on a committed miss and puts it in focus, Next deferral on a deferral", "[gui][step][focus]") {
     Fixture f;
     f.w.runToNextMiss();
     f.w.controller().wait();
