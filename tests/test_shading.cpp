@@ -53,7 +53,7 @@ TEST_CASE("refraction obeys Snell's law entering glass", "[shading][physics]") {
     // Down the z axis at x = 0.5: it meets the sphere where sin(incidence) = 0.5
     const Ray ray{Vec3(0.5, 0.0, 5.0), Vec3(0.0, 0.0, -1.0)};
     const double t = 5.0 - std::sqrt(0.75);
-    const RayTask& r = child(shadeHit(s, ray, t), RayKind::Refraction);
+    const RayTask r = child(shadeHit(s, ray, t), RayKind::Refraction);
     const Vec3 n = glm::normalize(ray.at(t));
     // sin(refraction) = sin(incidence) / 1.5 = 1/3, bent towards the inward normal
     const Vec3 d = r.query.ray.d;
@@ -64,7 +64,7 @@ TEST_CASE("refraction obeys Snell's law entering glass", "[shading][physics]") {
     REQUIRE(r.query.origin == RayOrigin{0, true});
     REQUIRE(r.weight == Vec3(0.6));  // Kt
     // reflection: the mirror direction, weighted by Ks
-    const RayTask& m = child(shadeHit(s, ray, t), RayKind::Reflection);
+    const RayTask m = child(shadeHit(s, ray, t), RayKind::Reflection);
     REQUIRE(glm::length(m.query.ray.d - (ray.d - 2.0 * glm::dot(ray.d, n) * n)) < 1e-14);
     REQUIRE(m.weight == Vec3(0.3));
 }
@@ -75,7 +75,7 @@ TEST_CASE("leaving glass: Snell below the critical angle, total internal reflect
     SECTION("sin(incidence) = 0.6 < 2/3: out, with sin(refraction) = 0.9") {
         REQUIRE(std::asin(0.6) < critical);
         const Ray ray{Vec3(0.6, 0.0, -0.5), Vec3(0.0, 0.0, 1.0)};  // inside, hits (0.6, 0, 0.8)
-        const RayTask& r = child(shadeHit(s, ray, 1.3, {0, true}), RayKind::Refraction);
+        const RayTask r = child(shadeHit(s, ray, 1.3, {0, true}), RayKind::Refraction);
         const Vec3 n(0.6, 0.0, 0.8);
         REQUIRE(glm::length(glm::cross(r.query.ray.d, n)) == Approx(0.9).epsilon(1e-12));
         REQUIRE(glm::dot(r.query.ray.d, n) > 0.0);  // out of the sphere
@@ -84,7 +84,7 @@ TEST_CASE("leaving glass: Snell below the critical angle, total internal reflect
     SECTION("sin(incidence) = 0.8 > 2/3: reflected back inside") {
         REQUIRE(std::asin(0.8) > critical);
         const Ray ray{Vec3(0.8, 0.0, -0.5), Vec3(0.0, 0.0, 1.0)};  // inside, hits (0.8, 0, 0.6)
-        const RayTask& r = child(shadeHit(s, ray, 1.1, {0, true}), RayKind::Refraction);
+        const RayTask r = child(shadeHit(s, ray, 1.1, {0, true}), RayKind::Refraction);
         // d - 2 (d.n) n with n = (0.8, 0, 0.6), d.n = 0.6
         REQUIRE(glm::length(r.query.ray.d - Vec3(-0.96, 0.0, 0.28)) < 1e-12);
         REQUIRE(r.query.origin == RayOrigin{0, true});
