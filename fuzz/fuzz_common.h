@@ -23,7 +23,7 @@ inline bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v
 
 /// What parseNff promises about a scene it returns.
 inline void checkScene(const Scene& s) {
-    FUZZ_CHECK(s.objects.size() == s.spheres.size() + s.polygons.size());
+    FUZZ_CHECK(s.objects.size() == s.spheres.size() + s.polygons.size() + s.cones.size());
     FUZZ_CHECK(s.camera.width >= 1 && s.camera.width <= NffLimits::maxResolution);
     FUZZ_CHECK(s.camera.height >= 1 && s.camera.height <= NffLimits::maxResolution);
     FUZZ_CHECK(s.camera.angle > 0.0 && s.camera.angle < 180.0);
@@ -32,10 +32,14 @@ inline void checkScene(const Scene& s) {
     for (const Object& o : s.objects) {
         FUZZ_CHECK(o.material >= 0 && o.material < int(s.materials.size()));
         if (o.shape == Shape::Sphere) FUZZ_CHECK(o.index >= 0 && o.index < int(s.spheres.size()));
+        else if (o.shape == Shape::Cone) FUZZ_CHECK(o.index >= 0 && o.index < int(s.cones.size()));
         else FUZZ_CHECK(o.index >= 0 && o.index < int(s.polygons.size()));
         FUZZ_CHECK(std::isfinite(o.bound.r) && finite(o.bound.c));
     }
     for (const Sphere& sp : s.spheres) FUZZ_CHECK(sp.r > 0.0 && std::isfinite(sp.r) && finite(sp.c));
+    for (const TruncatedCone& c : s.cones)
+        FUZZ_CHECK(c.height > 0.0 && std::isfinite(c.height) && c.baseRadius >= 0.0 && c.apexRadius >= 0.0 &&
+                   (c.baseRadius > 0.0 || c.apexRadius > 0.0) && finite(c.base) && finite(c.axis));
     for (const Polygon& p : s.polygons) {
         FUZZ_CHECK(p.vertices.size() >= 3);
         FUZZ_CHECK(p.vertices.size() <= std::size_t(NffLimits::maxPolygonVertices));
