@@ -151,8 +151,10 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
             }
         }
     } else {
-        origin = lists->originSite(f.origin);
-        target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light) : f.hit;
+        origin = f.origin.object >= 0 ? lists->pointSite(f.origin.object, f.ray.o) : lists->eyeSite();
+        target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light)
+                 : f.hit >= 0                  ? lists->pointSite(f.hit, f.ray.at(f.t))
+                                               : -1;
         coneAngle = emptyConeAround(s.scene(), f);
     }
     // An eye ray that hit nothing: the cone of eye rays known to hit nothing either
@@ -169,8 +171,7 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
     }
     // No target (a ray that hit nothing) or no entry yet: there is no hull to draw
     const rc::Scene& scene = s.scene();
-    const int sites = scene.size() + 1 + int(scene.lights.size());
-    if (origin < 0 || target < 0 || origin >= sites || target >= sites) return;
+    if (origin < 0 || target < 0 || origin >= lists->sites() || target >= lists->sites()) return;
     const rc::Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
     const QPolygonF shape = proj.hull(a, b);
     outline(p, shape, palette::kHull, 2.5 * lineScale_, Qt::SolidLine, withAlpha(palette::kHull, 45), &work_,

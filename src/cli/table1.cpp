@@ -91,7 +91,7 @@ int table1(const Table1Args& a) {
             std::string paper = "-";
             auto it = kPaper.find(N);
             if (c == 0) paper = "1.00";
-            else if (it != kPaper.end() && std::string(kConfigs[c].cache).rfind("blocker", 0) == 0)
+            else if (it != kPaper.end() && std::string(kConfigs[c].cache) == "blocker")
                 paper = std::to_string(std::string(kConfigs[c].order) == "bfs" ? it->second.second : it->second.first).substr(0, 4);
             const std::string name = std::string(kConfigs[c].cache) + ", " + kConfigs[c].order;
             std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f\n", name.c_str(), t, t / t0, paper.c_str(),

@@ -75,14 +75,7 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Count
     if (plus_ && list.bypass) return searchPast(q, &e, mode, n);
     // Then only the potential blockers between origin and target can come first
     Answer best{e.object, t};
-    const std::size_t size = list.ids.size();
-    if (plus_) {
-        // Blocker+: nearest first, and none beyond the nearest hit known can come first
-        for (std::size_t i = 0; i < size && list.reach[i] <= best.t; ++i)
-            testObject(scene_, q, list.ids[i], best, n);
-    } else {
-        for (std::size_t i = 0; i < size; ++i) testObject(scene_, q, list.ids[i], best, n);
-    }
+    testBlockers(q, list, best, n);
     e.blockerTarget = target;
     if (best.object != e.object) return {true, best, Decision::Miss, MissReason::BlockerHit};
     return {true, best, Decision::Hit};
@@ -131,18 +124,26 @@ Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why,
     Answer best;
     const BlockerList& list = lists_.get(lists_.originSite(q), lists_.lightSite(q.light), n);
     if (plus_ && list.bypass) return searchPast(q, nullptr, mode, n);
-    const std::size_t size = list.ids.size();
-    if (plus_) {
-        for (std::size_t i = 0; i < size && list.reach[i] <= std::min(best.t, q.tmax); ++i)
-            testObject(scene_, q, list.ids[i], best, n);
-    } else {
-        for (std::size_t i = 0; i < size; ++i) testObject(scene_, q, list.ids[i], best, n);
-    }
+    testBlockers(q, list, best, n);
     if (why != MissReason::None) return {true, best, Decision::Miss, why};
     if (best.object == e.object) return {true, best, Decision::Hit};
     return {true, best, Decision::Miss,
             best.object >= 0 ? MissReason::BlockerHit : MissReason::TargetMissed};
     // [blocker-shadow]
+}
+
+void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer& best, Counters& n) const {
+    // [test-blockers]
+    const std::size_t size = list.ids.size();
+    if (!plus_) {
+        // The paper: every potential blocker is tested
+        for (std::size_t i = 0; i < size; ++i) testObject(scene_, q, list.ids[i], best, n);
+        return;
+    }
+    // Blocker+: nearest first, and none beyond the nearest hit known (or the light) can come first
+    for (std::size_t i = 0; i < size && list.reach[i] <= std::min(best.t, q.tmax); ++i)
+        testObject(scene_, q, list.ids[i], best, n);
+    // [test-blockers]
 }
 
 Lookup BlockerCache::searchPast(const Query& q, CacheEntry* e, LookupMode mode, Counters& n) {
@@ -212,8 +213,7 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
         RayOrigin origin;
         double angle = kNoHit;  ///< no object: every direction hits nothing
     };
-    const Sphere from = scene_.objects.empty() || e.origin.object < 0 ? Sphere{scene_.camera.from, 0.0}
-                                                                        : scene_.objects[e.origin.object].bound;
+    const Sphere from = lists_.siteSphere(lists_.originSite(e.origin));
     EmptyCone cone(scene_, from, e.coneAxis, from.r + slack_, e.origin);
     search_.cull(cone);
     e.coneAngle = std::min(cone.angle, 3.14159) - 1e-9;

@@ -41,6 +41,8 @@ private:
     Lookup probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, LookupMode mode, Counters& n);
     void buildCone(CacheEntry& e, Counters& n) const;
+    /// Tests the potential blockers of `list` against `q`, keeping the nearest in `best`.
+    void testBlockers(const Query& q, const BlockerList& list, Answer& best, Counters& n) const;
     /// A ray whose list is not worth testing (BlockerList::bypass): a complete search,
     /// answered as uncached; the entry, if any, is loaded with what it found. In CheapOnly
     /// mode it searches nothing: the ray is deferred.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -13,10 +12,12 @@ namespace rc {
 
 namespace {
 /// The objects that meet the hull of two spheres (a point is a sphere of radius 0).
+/// `meets(id, hull)` has the last word on an object whose bounding sphere meets it.
+template <class Meets>
 struct HullCull final : SphereCull {
     HullCull(const Sphere& from, const Sphere& to, int target, double slack, Counters& n,
-             std::vector<std::pair<double, int>>& out, const std::function<bool(int, const Hull&)>& tiled)
-        : hull(from, to), target(target), slack(slack), n(n), out(out), tiled(tiled) {
+             std::vector<std::pair<double, int>>& out, Meets meets)
+        : hull(from, to), target(target), n(n), out(out), meets(meets) {
         // The hull lies within the larger radius of the segment between the centres
         a = from.c;
         b = to.c;
@@ -29,17 +30,14 @@ struct HullCull final : SphereCull {
         return hull.distance(s.c) - s.r;
     }
     void found(int id, double) override {
-        if (id == target) return;
-        // A tiled polygon blocks only if one of its tiles meets the hull
-        if (tiled && !tiled(id, hull)) return;
+        if (id == target || !meets(id, hull)) return;
         out.emplace_back(0.0, id);  // its reach is set once the list is known
     }
     Hull hull;
     int target;
-    double slack;
     Counters& n;
     std::vector<std::pair<double, int>>& out;
-    const std::function<bool(int, const Hull&)>& tiled;
+    Meets meets;
 };
 
 /// The typical object's size: the median radius of the bounding spheres.
@@ -68,14 +66,12 @@ void BlockerLists::makeTiles() {
     const double typical = medianRadius(scene_);
     if (!(typical > 0.0)) return;
     tilingOf_.assign(std::size_t(scene_.size()), -1);
-    const int firstTileSite = scene_.size() + 1 + int(scene_.lights.size());
     for (int id = 0; id < scene_.size(); ++id) {
         const Object& o = scene_.objects[id];
         if (o.shape != Shape::Polygon || !(o.bound.r > kLarge * typical)) continue;
         const Polygon& poly = scene_.polygons[o.index];
         // A frame in the plane, and the outline's box in it
         Tiling t;
-        t.object = id;
         t.e1 = glm::normalize(poly.vertices[1] - poly.vertices[0]);
         t.e2 = glm::cross(poly.normal, t.e1);
         double u0 = kNoHit, u1 = -kNoHit, v0 = kNoHit, v1 = -kNoHit;
@@ -88,12 +84,13 @@ void BlockerLists::makeTiles() {
         t.nv = std::clamp(int(std::ceil((v1 - v0) / (2.0 * typical))), 1, kMostTiles);
         t.du = (u1 - u0) / t.nu;
         t.dv = (v1 - v0) / t.nv;
-        t.firstSite = firstTileSite + int(tileSpheres_.size());
+        t.firstTile = int(tileSpheres_.size());
         // Each tile's sphere holds its rectangle, widened by the rounding of hit points
         const double r = 0.5 * std::hypot(t.du, t.dv) * (1.0 + 1e-9) + slack_;
         for (int j = 0; j < t.nv; ++j)
             for (int i = 0; i < t.nu; ++i)
                 tileSpheres_.push_back({t.corner + (i + 0.5) * t.du * t.e1 + (j + 0.5) * t.dv * t.e2, r});
+        tileObject_.resize(tileSpheres_.size(), id);
         tilingOf_[id] = int(tilings_.size());
         tilings_.push_back(t);
     }
@@ -106,23 +103,19 @@ int BlockerLists::tileSite(const Tiling& t, const Vec3& p) const {
     const Vec3 d = p - t.corner;
     const int i = std::clamp(int(std::floor(glm::dot(d, t.e1) / t.du)), 0, t.nu - 1);
     const int j = std::clamp(int(std::floor(glm::dot(d, t.e2) / t.dv)), 0, t.nv - 1);
-    return t.firstSite + j * t.nu + i;
+    return firstTileSite() + t.firstTile + j * t.nu + i;
 }
 
 int BlockerLists::siteObject(int site) const {
     if (site < scene_.size()) return site;
-    const int tile = site - (scene_.size() + 1 + int(scene_.lights.size()));
-    if (tile < 0) return -1;
-    for (const Tiling& t : tilings_)
-        if (site >= t.firstSite && site < t.firstSite + t.nu * t.nv) return t.object;
-    return -1;
+    if (site < firstTileSite()) return -1;  // the eye or a light
+    return tileObject_[std::size_t(site - firstTileSite())];
 }
 
 Sphere BlockerLists::siteSphere(int site) const {
     if (site < scene_.size()) return scene_.objects[site].bound;
     if (site == eyeSite()) return {scene_.camera.from, 0.0};
-    const int tile = site - (scene_.size() + 1 + int(scene_.lights.size()));
-    if (tile >= 0) return tileSpheres_[std::size_t(tile)];
+    if (site >= firstTileSite()) return tileSpheres_[std::size_t(site - firstTileSite())];
     return {scene_.lights[site - scene_.size() - 1].position, 0.0};
 }
 
@@ -170,17 +163,18 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     const Sphere a = siteSphere(origin);
     const Sphere b = siteSphere(target);
     found_.clear();
-    const std::function<bool(int, const Hull&)> tiled = [&](int id, const Hull& hull) {
+    // A tiled polygon blocks only if one of its tiles meets the hull
+    auto meets = [&](int id, const Hull& hull) {
         if (tilingOf_.empty() || tilingOf_[id] < 0) return true;
         const Tiling& t = tilings_[tilingOf_[id]];
-        for (int k = 0; k < t.nu * t.nv; ++k) {
-            const Sphere& s = tileSpheres_[std::size_t(t.firstSite - tilings_.front().firstSite + k)];
+        for (int k = t.firstTile; k < t.firstTile + t.nu * t.nv; ++k) {
+            const Sphere& tile = tileSpheres_[std::size_t(k)];
             ++n.hullTests;
-            if (hull.distance(s.c) - s.r <= slack_) return true;
+            if (hull.distance(tile.c) - tile.r <= slack_) return true;
         }
         return false;
     };
-    HullCull hull(a, b, siteObject(target), slack_, n, found_, tiled);
+    HullCull hull(a, b, siteObject(target), slack_, n, found_, meets);
     search_.cull(hull);
     for (auto& [reach, id] : found_) {
         const Sphere& s = scene_.objects[id].bound;

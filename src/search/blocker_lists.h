@@ -69,6 +69,8 @@ public:
     Sphere siteSphere(int site) const;
     /// Tiles made (0 without tiles).
     std::size_t tiles() const { return tileSpheres_.size(); }
+    /// How many sites there are: objects, the eye, the lights, then the tiles.
+    int sites() const { return sites_; }
 
     /// Every object whose bounding sphere meets the hull of the two sites, the target
     /// excepted; built on first use and counted in `n`.
@@ -80,13 +82,13 @@ public:
 private:
     /// A polygon cut into nu x nv tiles over its box in the plane (corner, e1, e2).
     struct Tiling {
-        int object = -1;
-        int firstSite = 0;
+        int firstTile = 0;  ///< its first tile in tileSpheres_
         Vec3 corner{0.0}, e1{0.0}, e2{0.0};
         double du = 0.0, dv = 0.0;
         int nu = 1, nv = 1;
     };
     int tileSite(const Tiling& t, const Vec3& p) const;
+    int firstTileSite() const { return scene_.size() + 1 + int(scene_.lights.size()); }
     void makeTiles();
     std::uint64_t key(int origin, int target) const {
         return std::uint64_t(origin) * std::uint64_t(sites_) + std::uint64_t(target);
@@ -96,7 +98,8 @@ private:
     double slack_;
     std::vector<int> tilingOf_;       ///< per object: its tiling, or -1 (empty: no tiles)
     std::vector<Tiling> tilings_;
-    std::vector<Sphere> tileSpheres_;  ///< per tile site, from lightSite(lights) + 1 on
+    std::vector<Sphere> tileSpheres_;  ///< per tile, whose site is firstTileSite() + its index
+    std::vector<int> tileObject_;      ///< per tile, the polygon it belongs to
     int sites_;
     std::deque<BlockerList> lists_;  ///< built lists; a deque keeps references stable
     /// Open addressing over keys: slot k holds key + 1 (0: empty) and its list's index

@@ -23,9 +23,9 @@ enum class CacheKind {
 };
 std::string_view toString(CacheKind k);
 /// Every cache kind, in the order tables list them.
-inline constexpr std::array<CacheKind, 4> kCacheKinds{CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker,
-                                                      CacheKind::BlockerPlus};
-inline constexpr const std::array<CacheKind, 4>& allCacheKinds() { return kCacheKinds; }
+constexpr std::array<CacheKind, 4> allCacheKinds() {
+    return {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
+}
 std::optional<CacheKind> parseCacheKind(std::string_view s);
 
 /// How far a lookup may go.
