@@ -7,38 +7,54 @@ namespace rc {
 BreadthFirstOrder::BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, bool cheapTests,
                                      EyeMaker makeEye)
     : width_(width), height_(rowEnd), band_(band > 0 ? std::min(band, rowEnd - rowBegin) : rowEnd - rowBegin),
-      cheapTests_(cheapTests), makeEye_(std::move(makeEye)), nextRow_(rowBegin) {}
+      invWidth_(1.0 / width), cheapTests_(cheapTests), makeEye_(std::move(makeEye)), nextRow_(rowBegin) {}
 
 bool BreadthFirstOrder::beginPath() {
     if (pathIndex_ < generation_.size()) ++pathIndex_;
     if (pathIndex_ >= generation_.size()) {
-        // The next generation of the ray tree; when none is left, the next band
+        // The next generation of the ray tree; when none is left, the next band. A path
+        // belongs to one generation (its depth), so one buffer per path serves both the
+        // rays being traced and those being spawned, and keeps its memory from band to band
+        for (int node : generation_) paths_[node].clear();
         generation_.clear();
-        for (int node = 0; node < int(nextGeneration_.size()); ++node) {
-            if (nextGeneration_[node].empty()) continue;
-            generation_.emplace_back(node, std::move(nextGeneration_[node]));
-            nextGeneration_[node].clear();
-        }
+        for (int node = 0; node < int(paths_.size()); ++node)
+            if (!paths_[node].empty()) generation_.push_back(node);
         pathIndex_ = 0;
         if (generation_.empty()) {
             if (nextRow_ >= height_) return false;
             bandRow_ = nextRow_;
             nextRow_ = std::min(height_, bandRow_ + band_);
-            std::vector<RayTask> eyes;
+            if (paths_.empty()) paths_.resize(1);
+            std::vector<RayTask>& eyes = paths_[0];
+            eyes.clear();
             eyes.reserve(std::size_t(nextRow_ - bandRow_) * width_);
             for (int p = bandRow_ * width_; p < nextRow_ * width_; ++p) eyes.push_back(makeEye_(p));
-            generation_.emplace_back(0, std::move(eyes));
+            generation_.push_back(0);
         }
     }
-    // The fill grid of this path: which pixels of the band have a ray on it
+    // The fill grid of this path: which pixels of the band have a ray on it. Only the
+    // path's own pixels are touched (a deep path may hold a handful of rays), and the
+    // scan for the next untouched seed walks them in pixel order
     const std::size_t pixels = std::size_t(nextRow_ - bandRow_) * width_;
-    slot_.assign(pixels, -1);
-    state_.assign(pixels, Absent);
-    const std::vector<RayTask>& tasks = generation_[pathIndex_].second;
+    if (state_.size() != pixels) {
+        state_.assign(pixels, Absent);
+        slot_.assign(pixels, -1);
+    }
+    const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
+    byPixel_.clear();
     for (int i = 0; i < int(tasks.size()); ++i) {
         const int local = tasks[i].pixel - bandRow_ * width_;
         slot_[local] = i;
         state_[local] = Unvisited;
+        byPixel_.push_back(local);
+    }
+    // In pixel order: a sparse path sorts its pixels, a dense one reads them off the grid
+    if (8 * tasks.size() < pixels) {
+        std::sort(byPixel_.begin(), byPixel_.end());
+    } else if (!std::is_sorted(byPixel_.begin(), byPixel_.end())) {
+        byPixel_.clear();
+        for (int local = 0; local < int(pixels); ++local)
+            if (state_[local] == Unvisited) byPixel_.push_back(local);
     }
     queue_.clear();
     pending_.clear();
@@ -50,7 +66,7 @@ bool BreadthFirstOrder::beginPath() {
 std::optional<Pick> BreadthFirstOrder::next() {
     for (;;) {
         if (!pathActive_ && !beginPath()) return std::nullopt;
-        const std::vector<RayTask>& tasks = generation_[pathIndex_].second;
+        const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
         // [bfs-next]
         // Keep filling the current region with cheap tests only
         if (!queue_.empty()) {
@@ -65,13 +81,15 @@ std::optional<Pick> BreadthFirstOrder::next() {
             if (state_[pending_.front()] == Deferred) seed = pending_.front();
             pending_.pop_front();
         }
-        while (seed < 0 && scan_ < int(state_.size())) {
-            if (state_[scan_] == Unvisited) seed = scan_;
+        while (seed < 0 && scan_ < int(byPixel_.size())) {
+            if (state_[byPixel_[std::size_t(scan_)]] == Unvisited) seed = byPixel_[std::size_t(scan_)];
             ++scan_;
         }
         // [bfs-next]
         if (seed < 0) {
-            pathActive_ = false;  // every ray of this path is traced
+            // Every ray of this path is traced: its pixels leave the fill grid
+            for (int local : byPixel_) state_[local] = Absent;
+            pathActive_ = false;
             continue;
         }
         ++regions_;
@@ -83,14 +101,20 @@ std::optional<Pick> BreadthFirstOrder::next() {
 }
 
 void BreadthFirstOrder::enqueueNeighbours(int local) {
-    const int x = local % width_, y = local / width_;
+    // The pixel's row and column without an integer division (a division per ray costs
+    // more than the rest of this function): (local + 1/2) / width is an exact enough quotient
+    const int y = int((local + 0.5) * invWidth_), x = local - y * width_;
     const int rows = nextRow_ - bandRow_;
+    const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
     auto visit = [&](int nx, int ny) {
         if (nx < 0 || ny < 0 || nx >= width_ || ny >= rows) return;
         const int q = ny * width_ + nx;
         if (state_[q] == Unvisited || state_[q] == Deferred) {
             state_[q] = Queued;
             queue_.push_back(q);
+            // Its ray is traced soon: start fetching it now
+            const char* task = reinterpret_cast<const char*>(&tasks[std::size_t(slot_[q])]);
+            for (std::size_t line = 0; line < sizeof(RayTask); line += 64) __builtin_prefetch(task + line);
         }
     };
     visit(x - 1, y);
@@ -102,8 +126,8 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
 
 void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTask>& children) {
     for (RayTask& c : children) {
-        if (c.node >= int(nextGeneration_.size())) nextGeneration_.resize(std::size_t(c.node) + 1);
-        nextGeneration_[c.node].push_back(std::move(c));
+        if (c.node >= int(paths_.size())) paths_.resize(std::size_t(c.node) + 1);
+        paths_[c.node].push_back(std::move(c));
     }
     state_[inflight_] = Done;
     // [bfs-extend]
@@ -124,7 +148,7 @@ FrontierView BreadthFirstOrder::frontier() const {
     for (int q : queue_) f.queued.push_back(base + q);
     for (int q = 0; q < int(state_.size()); ++q)
         if (state_[q] == Deferred) f.deferred.push_back(base + q);
-    f.path = generation_[pathIndex_].first;
+    f.path = generation_[pathIndex_];
     f.region = regions_;
     return f;
 }

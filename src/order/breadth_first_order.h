@@ -39,18 +39,21 @@ private:
     void enqueueNeighbours(int local);
 
     int width_, height_, band_;
+    double invWidth_;  ///< 1 / width_
     bool cheapTests_;
     EyeMaker makeEye_;
     int bandRow_ = 0;   ///< first scanline of the current band
     int nextRow_;       ///< first scanline of the next band
     // Rays of the current generation by path, the path being filled, and the next generation
-    std::vector<std::pair<int, std::vector<RayTask>>> generation_;
+    std::vector<int> generation_;  ///< paths (cache tree nodes) with rays in this generation
     std::size_t pathIndex_ = 0;
     bool pathActive_ = false;
-    std::vector<std::vector<RayTask>> nextGeneration_;  ///< by path (cache tree node)
+    /// Rays by path (cache tree node): this generation's being traced, the next's spawned
+    std::vector<std::vector<RayTask>> paths_;
     // Fill state of the active path, over the pixels of the band
     std::vector<int> slot_;
     std::vector<State> state_;
+    std::vector<int> byPixel_;  ///< the path's pixels (band-local), ascending: the seed scan
     std::deque<int> queue_;
     std::deque<int> pending_;
     int scan_ = 0;

@@ -74,11 +74,13 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
     // Threads number the ray-tree paths in the order they meet them: map them to one tree
     CacheTree canonical;
     ParallelRun out;
-    out.image = ImageAccumulator(base.width, base.height);
     out.threads = threads;
+    // One thread held every row: its image is the image
+    if (threads == 1) out.image = sessions[0]->takeImage();
+    else out.image = ImageAccumulator(base.width, base.height);
     for (int k = 0; k < threads; ++k) {
         const RenderSession& s = *sessions[k];
-        out.image += s.image();
+        if (threads > 1) out.image += s.image();
         out.counters += s.counters();
         out.queuePeak = std::max(out.queuePeak, s.order().queuePeak());
         out.regions += s.order().regions();

@@ -19,10 +19,14 @@ RenderOptions resolved(const Scene& scene, RenderOptions o) {
 }  // namespace
 
 RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options)
+    : RenderSession(std::move(scene), options, nullptr) {}
+
+RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options,
+                             std::unique_ptr<CompleteSearch> search)
     : scene_(std::move(scene)),
       options_(resolved(*scene_, options)),
       camera_(scene_->camera, options_.width, options_.height),
-      search_(makeCompleteSearch(options_.accel, *scene_)),
+      search_(search ? std::move(search) : makeCompleteSearch(options_.accel, *scene_)),
       verifier_(*scene_),
       strategy_(makeStrategy(options_.cache, *scene_, *search_)),
       image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {
@@ -58,12 +62,16 @@ bool RenderSession::step() {
         // Ask the cache at this ray's path in the cache tree
         const std::uint64_t testsBefore = counters_.intersectionTests;
         const Lookup lookup = strategy_->lookup(task.query, entry, pick->mode, counters_);
-        TraceEvent event{steps_, task, lookup, int(counters_.intersectionTests - testsBefore), false};
+        // What the sinks hear (made only when one listens)
+        auto tell = [&](bool deferred) {
+            if (sinks_.empty()) return;
+            const TraceEvent event{steps_, task, lookup, int(counters_.intersectionTests - testsBefore), deferred};
+            for (TraceSink* s : sinks_) s->onEvent(event);
+        };
         if (!lookup.known) {
             // Breadth-first: the cheap test failed; the ray waits for a later region
             ++counters_.deferrals;
-            event.deferred = true;
-            for (TraceSink* s : sinks_) s->onEvent(event);
+            tell(true);
             order_->deferred(task);
             continue;
         }
@@ -84,7 +92,7 @@ bool RenderSession::step() {
         children_.clear();
         shade(*scene_, task, lookup.answer, options_.shading, paths_, image_, children_);
         // [session-step]
-        for (TraceSink* s : sinks_) s->onEvent(event);
+        tell(false);
         order_->committed(task, lookup.decision, children_);
         ++steps_;
         return true;

@@ -42,6 +42,8 @@ struct RenderOptions {
 class RenderSession {
 public:
     RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options);
+    /// A render whose complete searches are made by `search` instead of `options.accel`'s.
+    RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options, std::unique_ptr<CompleteSearch> search);
     ~RenderSession();
 
     /// Traces one ray. Returns false when the image is complete.
@@ -62,6 +64,8 @@ public:
     int height() const { return options_.height; }
     const Counters& counters() const { return counters_; }
     const ImageAccumulator& image() const { return image_; }
+    /// Hands the image over (the session's is left empty): no copy of a finished render.
+    ImageAccumulator takeImage() { return std::move(image_); }
     const CacheTree& cacheTree() const { return paths_; }
     const CacheStrategy& strategy() const { return *strategy_; }
     const RayOrder& order() const { return *order_; }

@@ -60,7 +60,12 @@ public:
     static std::int64_t toFixed(double v) {
         if (std::isnan(v)) return 0;
         v = v < -kMaxContribution ? -kMaxContribution : (v > kMaxContribution ? kMaxContribution : v);
-        return std::int64_t(std::llround(v * kScale));
+        // std::llround (half away from zero), inline: |v| * 2^32 <= 2^52 truncates exactly,
+        // and the fraction left, a - r, is exact
+        const double a = std::fabs(v * kScale);
+        std::int64_t r = std::int64_t(a);
+        if (a - double(r) >= 0.5) ++r;
+        return v < 0.0 ? -r : r;
     }
     /// Sums stop at the int64 limits instead of overflowing (undefined behaviour). With
     /// contributions of one sign, as shading's are, that is still independent of order.
