@@ -52,8 +52,8 @@ std::string map(int width, int height, const std::vector<int>& key, const std::v
     if (width > 48 || height > 48) return "(image too large to draw)";
     std::ostringstream out;
     // Catch2 wraps lines at 80 columns: the legend goes first, the two maps side by side
-    out << "left: the keys, a letter each; right: your regions so far, a digit each (region\n"
-           "number mod 10), '.' not yet visited; '*' marks the pixel\n";
+    out << "left: the keys, a letter each; right: your regions so far, a digit each\n"
+           "(region number mod 10), '.' not yet visited; '*' marks the pixel\n";
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const int p = y * width + x;
