@@ -14,8 +14,9 @@ std::string programName = "tutorial";
 
 Rgb labelColour(int label) {
     if (label < 0) return {40, 40, 48};
-    // Golden-ratio hues: neighbouring labels get far-apart colours
-    const double h = std::fmod(0.13 + 0.618033988749895 * label, 1.0) * 6.0;
+    // Golden-ratio hues: neighbouring labels get far-apart colours. Hues stop short of
+    // magenta (300 degrees), which the checks keep for wrong answers.
+    const double h = std::fmod(0.13 + 0.618033988749895 * label, 1.0) * 4.4;
     const double s = label % 2 ? 0.55 : 0.75, v = label % 3 == 1 ? 0.80 : 0.95;
     const int i = int(h);
     const double f = h - i, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
