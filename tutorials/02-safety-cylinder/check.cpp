@@ -107,6 +107,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
     // The picture: every pixel whose eye ray hits a sphere, bright where the cylinder of
     // the pixel before it (your radius, your containment test) answers it, dark where
     // the cache misses; magenta where your answer differs from the library's cylinder
+    std::string picture;
     {
         tutorial::Picture pic(n, n);
         int wrong = 0;
@@ -128,11 +129,12 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
             }
             pic.set(p % n, p / n, c);
         }
-        const std::string path = pic.save("cube4", 10);
+        picture = pic.save("cube4", 10);
         tutorial::announcePicture("cube:4, bright: answered by the previous pixel's cylinder; magenta: " +
                                       std::to_string(wrong) + " pixel(s) answered differently from the library",
-                                  path);
+                                  picture);
     }
+    INFO("your cylinders on cube:4 (magenta: answered differently from the library): " << picture);
     int hits = 0, tested = 0;
     for (int p = 0; p + 1 < n * n; ++p) {
         rc::Query q;
