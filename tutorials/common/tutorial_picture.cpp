@@ -60,14 +60,6 @@ void Picture::disc(double cx, double cy, double r, Rgb c) {
             if ((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy) <= r * r) set(x, y, c);
 }
 
-void Picture::line(double x0, double y0, double x1, double y1, Rgb c) {
-    const int n = 1 + int(std::max(std::abs(x1 - x0), std::abs(y1 - y0)));
-    for (int i = 0; i <= n; ++i) {
-        const double t = double(i) / n;
-        set(int(std::floor(x0 + t * (x1 - x0))), int(std::floor(y0 + t * (y1 - y0))), c);
-    }
-}
-
 std::string Picture::save(const std::string& name, int scale) const {
     std::vector<std::uint8_t> rgb;
     rgb.reserve(std::size_t(width_) * height_ * scale * scale * 3);

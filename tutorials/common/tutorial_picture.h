@@ -28,7 +28,6 @@ public:
     Rgb get(int x, int y) const;
     void circle(double cx, double cy, double r, Rgb c);  ///< a ring one pixel wide
     void disc(double cx, double cy, double r, Rgb c);    ///< filled
-    void line(double x0, double y0, double x1, double y1, Rgb c);
     /// Saves the picture `scale` times larger (each pixel a square) as
     /// <program>-<name>.png and returns the absolute path.
     std::string save(const std::string& name, int scale = 1) const;
