@@ -3,9 +3,15 @@
 #define CATCH_CONFIG_RUNNER
 #include <cstdio>
 
+#include <filesystem>
+
 #include <catch2/catch.hpp>
 
+#include "tutorial_picture.h"
+
 int main(int argc, char* argv[]) {
+    // Pictures are named after the program: tutorial_03_exercise-hull.png, ...
+    if (argc > 0) tutorial::programName = std::filesystem::path(argv[0]).filename().string();
     const int failed = Catch::Session().run(argc, argv);
     if (failed == 0) {
         std::printf("\nSOLVED: every check passes.\n");

@@ -2,11 +2,15 @@
 // rc::LinearSearch, on seeded random scenes and rays.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <string>
+
 #include <glm/geometric.hpp>
 
 #include "exercise.h"
 #include "scene/builtin_scenes.h"
 #include "search/complete_search.h"
+#include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
@@ -68,6 +72,27 @@ TEST_CASE("nearestHit finds what the eye sees in cube:3", "[tutorial01]") {
     const rc::LinearSearch search(s);
     const int w = 48, h = 48;
     const rc::RayGenerator camera(s.camera, w, h);
+    // The picture: what your search sees through every pixel, each sphere in its colour,
+    // shaded by the angle the ray meets it at; magenta where the complete search disagrees
+    tutorial::Picture pic(w, h);
+    int wrong = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            rc::Query q;
+            q.ray = camera.primary(x, y);
+            rc::Counters n;
+            const rc::Answer got = tutorial::nearestHit(s, q), want = search.nearest(q, n);
+            tutorial::Rgb c = tutorial::labelColour(got.object);
+            if (got.object >= 0 && got.t < rc::kNoHit) {
+                const rc::Sphere& b = s.objects[got.object].bound;
+                c = tutorial::shade(c, 0.3 + 0.7 * std::abs(glm::dot(glm::normalize(q.ray.at(got.t) - b.c), q.ray.d)));
+            }
+            if (!(got == want)) c = {255, 0, 255}, ++wrong;
+            pic.set(x, y, c);
+        }
+    const std::string path = pic.save("cube3", 6);
+    tutorial::announcePicture("what your search sees in cube:3; magenta: " + std::to_string(wrong) + " wrong pixel(s)", path);
+    INFO("your picture of cube:3, wrong pixels in magenta: " << path);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             rc::Query q;

@@ -3,6 +3,7 @@
 // against the gap to the nearest other sphere, on random cases and on cube:4's eye rays.
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -14,6 +15,7 @@
 #include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
 #include "search/complete_search.h"
+#include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
@@ -102,6 +104,37 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
     const rc::LinearSearch search(s);
     const int n = 32;
     const rc::RayGenerator camera(s.camera, n, n);
+    // The picture: every pixel whose eye ray hits a sphere, bright where the cylinder of
+    // the pixel before it (your radius, your containment test) answers it, dark where
+    // the cache misses; magenta where your answer differs from the library's cylinder
+    std::string picture;
+    {
+        tutorial::Picture pic(n, n);
+        int wrong = 0;
+        for (int p = 1; p < n * n; ++p) {
+            rc::Query q, next;
+            q.ray = camera.primary((p - 1) % n, (p - 1) / n);
+            next.ray = camera.primary(p % n, p / n);
+            rc::Counters count;
+            const rc::Answer hit = search.nearest(q, count), now = search.nearest(next, count);
+            if (now.object < 0) continue;
+            tutorial::Rgb c = tutorial::shade(tutorial::labelColour(now.object), 0.3);
+            if (hit.object == now.object) {
+                const rc::Vec3 h = q.ray.at(hit.t), h2 = next.ray.at(now.t);
+                const double want = gap(spheres, hit.object, q.ray.o, h);
+                const bool mine = tutorial::insideCapsule(next.ray.o, h2, q.ray.o, h,
+                                                          tutorial::safetyRadius(spheres, hit.object, q.ray.o, h));
+                if (mine) c = tutorial::labelColour(now.object);
+                if (mine != rc::SafetyCylinder{q.ray.o, h, want}.contains(next.ray.o, h2)) c = {255, 0, 255}, ++wrong;
+            }
+            pic.set(p % n, p / n, c);
+        }
+        picture = pic.save("cube4", 10);
+        tutorial::announcePicture("cube:4, bright: answered by the previous pixel's cylinder; magenta: " +
+                                      std::to_string(wrong) + " pixel(s) answered differently from the library",
+                                  picture);
+    }
+    INFO("your cylinders on cube:4 (magenta: answered differently from the library): " << picture);
     int hits = 0, tested = 0;
     for (int p = 0; p + 1 < n * n; ++p) {
         rc::Query q;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -12,6 +13,7 @@
 #include "scene/builtin_scenes.h"
 #include "search/blocker_lists.h"
 #include "search/complete_search.h"
+#include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
@@ -30,6 +32,50 @@ void randomPair(tutorial::Random& rnd, int kind, rc::Sphere& a, rc::Sphere& b) {
     }
 }
 
+// The picture: a slice through the axis of one pair of spheres (the plane z = 0). Blue
+// is your hull, pale yellow where yours is larger than the true one (allowed), magenta
+// where a point of the true hull is outside yours. Circles are spheres of the scene:
+// orange on your list, grey not, yellow on yours only (extra), magenta left off.
+std::string drawHull() {
+    const rc::Sphere a{{-3.0, 0.0, 0.0}, 1.5}, b{{3.0, 0.6, 0.0}, 0.6};
+    const int w = 180, h = 120;
+    const double scale = 12.0 / w;  // world units per pixel; x in [-6, 6], y in [-4, 4]
+    auto world = [&](double px, double py) { return rc::Vec3{-6.0 + px * scale, 4.0 - py * scale, 0.0}; };
+    auto pixel = [&](const rc::Vec3& p, double& px, double& py) { px = (p.x + 6.0) / scale, py = (4.0 - p.y) / scale; };
+    tutorial::Picture pic(w, h, {250, 250, 250});
+    int leftOut = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const rc::Vec3 p = world(x + 0.5, y + 0.5);
+            const bool mine = tutorial::hullDistance(p, a, b) <= 0.0, want = rc::hullDistance(p, a, b) <= 0.0;
+            if (mine) pic.set(x, y, want ? tutorial::Rgb{120, 160, 230} : tutorial::Rgb{250, 235, 150});
+            else if (want) pic.set(x, y, {255, 0, 255}), ++leftOut;
+        }
+    double px, py;
+    for (const rc::Sphere& s : {a, b}) {
+        pixel(s.c, px, py);
+        pic.circle(px, py, s.r / scale, {20, 140, 40});
+    }
+    tutorial::Random rnd(2);
+    for (int i = 0; i < 40; ++i) {
+        const rc::Sphere s{{rnd.uniform(-5.5, 5.5), rnd.uniform(-3.5, 3.5), 0.0}, rnd.uniform(0.15, 0.45)};
+        if (rc::hullDistance(s.c, a, a) < s.r || rc::hullDistance(s.c, b, b) < s.r) continue;  // overlaps a or b
+        const bool mine = tutorial::hullDistance(s.c, a, b) <= s.r, want = rc::meetsHull(s, a, b, 0.0);
+        pixel(s.c, px, py);
+        const tutorial::Rgb c = mine && want ? tutorial::Rgb{240, 140, 20}
+                                : mine       ? tutorial::Rgb{230, 210, 40}
+                                : want       ? tutorial::Rgb{255, 0, 255}
+                                             : tutorial::Rgb{150, 150, 150};
+        if (mine || want) pic.disc(px, py, s.r / scale, c);
+        pic.circle(px, py, s.r / scale, {60, 60, 60});
+    }
+    const std::string path = pic.save("hull", 3);
+    tutorial::announcePicture("your hull of two spheres and its blockers; magenta: " + std::to_string(leftOut) +
+                                  " pixel(s) of the true hull outside yours, or blockers left off",
+                              path);
+    return path;
+}
+
 }  // namespace
 
 // Extra spheres in a list are allowed (the list stays correct, each costs one more
@@ -38,6 +84,7 @@ void randomPair(tutorial::Random& rnd, int kind, rc::Sphere& a, rc::Sphere& b) {
 constexpr double kMaxExtraFactor = 1.5;
 
 TEST_CASE("hullDistance never puts a point of the hull outside it", "[tutorial03]") {
+    INFO("your hull in a slice through its axis (magenta: left out): " << drawHull());
     tutorial::Random rnd(1986);
     int outside = 0, inside = 0, inexact = 0;
     for (int i = 0; i < 50000; ++i) {

@@ -17,6 +17,7 @@
 #include "order/breadth_first_order.h"
 #include "scene/builtin_scenes.h"
 #include "search/complete_search.h"
+#include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
@@ -51,8 +52,8 @@ std::string map(int width, int height, const std::vector<int>& key, const std::v
     if (width > 48 || height > 48) return "(image too large to draw)";
     std::ostringstream out;
     // Catch2 wraps lines at 80 columns: the legend goes first, the two maps side by side
-    out << "left: the keys, a letter each; right: your regions so far, a digit each (region\n"
-           "number mod 10), '.' not yet visited; '*' marks the pixel\n";
+    out << "left: the keys, a letter each; right: your regions so far, a digit each\n"
+           "(region number mod 10), '.' not yet visited; '*' marks the pixel\n";
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const int p = y * width + x;
@@ -179,6 +180,29 @@ std::vector<int> randomKeys(tutorial::Random& rnd, int width, int height) {
     return key;
 }
 
+// The picture: the region map of your fill, each region in its colour, seeds white,
+// pixels your fill never seeded or answered magenta
+std::string drawRegions(int width, int height, const std::vector<tutorial::Visit>& visits) {
+    std::vector<int> region(std::size_t(width) * height, -2);
+    int current = -1;
+    for (const tutorial::Visit& v : visits) {
+        if (v.pixel < 0 || v.pixel >= width * height) continue;
+        if (v.step == tutorial::Step::Seed) region[v.pixel] = ++current;
+        else if (v.step == tutorial::Step::Answer) region[v.pixel] = current;
+    }
+    tutorial::Picture pic(width, height);
+    for (int p = 0; p < width * height; ++p)
+        pic.set(p % width, p / width, region[p] == -2 ? tutorial::Rgb{255, 0, 255} : tutorial::labelColour(region[p]));
+    for (const tutorial::Visit& v : visits)
+        if (v.step == tutorial::Step::Seed && v.pixel >= 0 && v.pixel < width * height)
+            pic.set(v.pixel % width, v.pixel / width, {255, 255, 255});
+    const std::string path = pic.save("regions", 6);
+    tutorial::announcePicture("the regions of your fill on cube:3 (" + std::to_string(current + 1) +
+                                  " seeds counted from Seed visits), bands of 8 rows",
+                              path);
+    return path;
+}
+
 }  // namespace
 
 TEST_CASE("seedFill fills random images region by region, band by band", "[tutorial04]") {
@@ -211,6 +235,8 @@ TEST_CASE("seedFill makes one complete search per region of cube:3's eye rays", 
         rc::Counters n;
         key[p] = search.nearest(q, n).object;  // the sphere the eye ray hits, -1 for none
     }
+    const std::string path = drawRegions(width, height, tutorial::seedFill(width, height, 8, key));
+    INFO("the regions of your fill in bands of 8 rows: " << path);
     for (int band : {0, 8}) {
         INFO("bands of " << band << " rows (0: one band)");
         const FillReport mine = checkFill(width, height, band, key, tutorial::seedFill(width, height, band, key));

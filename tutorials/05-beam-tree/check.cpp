@@ -3,6 +3,8 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numeric>
+#include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -11,6 +13,7 @@
 #include "exercise.h"
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
+#include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
@@ -54,6 +57,68 @@ private:
     std::map<int, tutorial::PathImage> byPath_;
 };
 
+// The picture: the beams of the first two ray-tree paths as your beamTree labels them.
+// For every two neighbouring pixels the check asks your beamTree about an image that
+// holds just those two rays: one beam means your code merges them. The pieces that your
+// merges make are drawn each in its colour; pixels with no ray at that path are white;
+// magenta marks a beam of yours that joins two of the rule's beams or splits one.
+std::string drawBeams(int width, int height, const std::vector<tutorial::PathImage>& paths) {
+    const int panels = std::min<int>(2, int(paths.size()));
+    tutorial::Picture pic(panels * (width + 2), height, {255, 255, 255});
+    long beams = 0;
+    for (int k = 0; k < panels; ++k) {
+        const tutorial::PathImage& image = paths[k];
+        // Two partitions of the pixels: the one your merges make, and the rule's (4-neighbours
+        // with the same origin, side and hit)
+        std::vector<int> parent(image.size()), rule(image.size());
+        std::iota(parent.begin(), parent.end(), 0);
+        std::iota(rule.begin(), rule.end(), 0);
+        auto find = [](std::vector<int>& up, int p) {
+            while (up[p] != p) p = up[p] = up[up[p]];
+            return p;
+        };
+        tutorial::PathImage two(image.size());
+        for (int p = 0; p < width * height; ++p) {
+            const int x = p % width, y = p / width;
+            // Right and down neighbours, and the two diagonal ones (never one beam alone)
+            for (const int q : {x + 1 < width ? p + 1 : -1, y + 1 < height ? p + width : -1,
+                                x + 1 < width && y + 1 < height ? p + width + 1 : -1,
+                                x > 0 && y + 1 < height ? p + width - 1 : -1}) {
+                if (q < 0 || !image[p].present || !image[q].present) continue;
+                two[p] = image[p], two[q] = image[q];
+                if (tutorial::beamTree(width, height, {two}).beams == 1) parent[find(parent, p)] = find(parent, q);
+                two[p] = two[q] = tutorial::PixelRay{};
+                if ((q == p + 1 || q == p + width) && image[p].origin == image[q].origin &&
+                    image[p].inside == image[q].inside && image[p].hit == image[q].hit)
+                    rule[find(rule, p)] = find(rule, q);
+            }
+        }
+        // A beam of yours that joins two of the rule's, or a beam of the rule's you split: magenta
+        std::vector<int> ruleOf(image.size(), -1), yoursOf(image.size(), -1);
+        std::vector<char> bad(image.size(), 0);
+        for (int p = 0; p < width * height; ++p) {
+            if (!image[p].present) continue;
+            const int a = find(parent, p), b = find(rule, p);
+            if (ruleOf[a] < 0) ruleOf[a] = b;
+            if (yoursOf[b] < 0) yoursOf[b] = a;
+            if (ruleOf[a] != b) bad[a] = 1;
+            if (yoursOf[b] != a) bad[a] = bad[yoursOf[b]] = 1;
+        }
+        for (int p = 0; p < width * height; ++p) {
+            if (!image[p].present) continue;
+            const int a = find(parent, p);
+            beams += a == p;
+            pic.set(k * (width + 2) + p % width, p / width,
+                    bad[a] ? tutorial::Rgb{255, 0, 255} : tutorial::labelColour(a % 997));
+        }
+    }
+    const std::string path = pic.save("beams", 6);
+    tutorial::announcePicture("the beams of cube:3's eye rays (left) and their reflections (right), as your code merges "
+                              "neighbours: " + std::to_string(beams) + " beams; magenta: merged or split against the rule",
+                              path);
+    return path;
+}
+
 }  // namespace
 
 TEST_CASE("beamTree agrees with rc::BeamTreeBuilder on random path images", "[tutorial05]") {
@@ -95,6 +160,10 @@ TEST_CASE("beamTree agrees with rc::BeamTreeBuilder on real renders", "[tutorial
         const rc::BeamTreeStats want = builder.build();
         const tutorial::BeamStats got = tutorial::beamTree(o.width, o.height, recorder.paths());
         INFO("scene " << name);
+        if (std::string(name) == "cube:3") {
+            const std::string path = drawBeams(o.width, o.height, recorder.paths());
+            INFO("your beams of cube:3: " << path);
+        }
         REQUIRE(got.beams == want.nodes);
         REQUIRE(std::abs(got.coherence - want.coherence) <= 1e-12 * want.coherence);
     }

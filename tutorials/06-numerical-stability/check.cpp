@@ -2,13 +2,18 @@
 // cases (where the textbook formula is fine too) and on stiff ones (where it is not).
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
 #include <glm/geometric.hpp>
 
 #include "exercise.h"
+#include "scene/nff_reader.h"
+#include "search/query.h"
+#include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
@@ -107,4 +112,42 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
         REQUIRE(std::abs(got.t0 - want.t0) <= 1e-12 * want.t0);
         REQUIRE(std::abs(got.t1 - want.t1) <= 1e-12 * want.t1);
     }
+}
+
+TEST_CASE("far.nff drawn with your roots matches the stable roots", "[tutorial06]") {
+    // Spheres of radius about 1 a billion units from the eye: each pixel's eye ray is
+    // tested against every sphere with your roots, the nearest root in front wins
+    const rc::Scene s = rc::readNffFile(TUTORIAL_DIR "/far.nff");
+    const int w = 64, h = 64;
+    const rc::RayGenerator camera(s.camera, w, h);
+    auto firstHit = [&](const rc::Ray& ray, auto roots) {
+        rc::Answer best;
+        for (int j = 0; j < int(s.spheres.size()); ++j) {
+            const rc::SphereRoots r = roots(ray, s.spheres[j]);
+            const double t = !r.hit ? rc::kNoHit : r.t0 > 0.0 ? r.t0 : r.t1 > 0.0 ? r.t1 : rc::kNoHit;
+            if (t < rc::kNoHit && rc::nearer(t, j, best)) best = {j, t};
+        }
+        return best;
+    };
+    tutorial::Picture pic(w, h);
+    int wrong = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const rc::Ray ray = camera.primary(x, y);
+            const rc::Answer mine = firstHit(ray, tutorial::stableRoots);
+            const rc::Answer want = firstHit(ray, rc::sphereRootsStable);
+            tutorial::Rgb c = tutorial::labelColour(mine.object);
+            if (mine.object >= 0) {
+                // Shade by the normal at your hit point, facing the light
+                const rc::Vec3 n = glm::normalize(ray.at(mine.t) - s.spheres[mine.object].c);
+                const rc::Vec3 l = glm::normalize(s.lights.at(0).position - s.spheres[mine.object].c);
+                c = tutorial::shade(c, 0.25 + 0.75 * std::max(0.0, glm::dot(n, l)));
+            }
+            wrong += mine.object != want.object;
+            pic.set(x, y, c);
+        }
+    const std::string path = pic.save("far", 6);
+    tutorial::announcePicture("far.nff with your roots: " + std::to_string(wrong) + " pixel(s) hit differently", path);
+    INFO(wrong << " pixel(s) of far.nff hit a different sphere (or none) with your roots: see " << path);
+    REQUIRE(wrong == 0);
 }
