@@ -31,9 +31,10 @@ struct Measured {
     std::uint64_t rays;
 };
 Measured render(const std::shared_ptr<const Scene>& scene, AccelKind accel, CacheKind cache, OrderKind order,
-                int size) {
+                int size, int height = 0) {
     RenderOptions o;
-    o.width = o.height = size;
+    o.width = size;
+    o.height = height > 0 ? height : size;
     o.accel = accel;
     o.cache = cache;
     o.order = order;
@@ -47,7 +48,7 @@ Measured render(const std::shared_ptr<const Scene>& scene, AccelKind accel, Cach
 TEST_CASE("the ray loop does not allocate", "[alloc]") {
     auto scene = std::make_shared<const Scene>(makeBuiltin("cube:5"));
     for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
-        for (CacheKind cache : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker}) {
+        for (CacheKind cache : {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus}) {
             for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) {
                 INFO(toString(accel) << " " << toString(cache) << " " << toString(order));
                 const Measured small = render(scene, accel, cache, order, 48);
@@ -57,10 +58,22 @@ TEST_CASE("the ray loop does not allocate", "[alloc]") {
                 // Allocations follow what is new (lists, bands), a small fraction of the rays
                 REQUIRE(large.allocations * 5 < long(large.rays));
                 // Scanline order without blocker lists: four times the rays, no more allocations
-                if (order == OrderKind::Scanline && cache != CacheKind::Blocker)
+                if (order == OrderKind::Scanline && cache != CacheKind::Blocker && cache != CacheKind::BlockerPlus)
                     REQUIRE(large.allocations == small.allocations);
             }
         }
+    }
+}
+TEST_CASE("breadth-first bands reuse the memory of the bands before", "[alloc]") {
+    // Four times the bands of the same width: the rays of each path in a band go into the
+    // buffer the path had in the band before, so only a path's first bands allocate
+    auto scene = std::make_shared<const Scene>(makeBuiltin("cube:5"));
+    for (CacheKind cache : {CacheKind::None, CacheKind::Cylinder}) {
+        INFO(toString(cache));
+        const Measured few = render(scene, AccelKind::Linear, cache, OrderKind::BreadthFirst, 64, 64);
+        const Measured many = render(scene, AccelKind::Linear, cache, OrderKind::BreadthFirst, 64, 256);
+        REQUIRE(many.rays > 3 * few.rays);
+        REQUIRE(many.allocations - few.allocations < few.allocations / 4);
     }
 }
 #endif

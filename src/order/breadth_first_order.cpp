@@ -145,7 +145,7 @@ FrontierView BreadthFirstOrder::frontier() const {
     FrontierView f;
     if (!pathActive_) return f;
     const int base = bandRow_ * width_;
-    for (int q : queue_) f.queued.push_back(base + q);
+    for (std::size_t i = queue_.head; i < queue_.items.size(); ++i) f.queued.push_back(base + queue_.items[i]);
     for (int q = 0; q < int(state_.size()); ++q)
         if (state_[q] == Deferred) f.deferred.push_back(base + q);
     f.path = generation_[pathIndex_];

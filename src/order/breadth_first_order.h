@@ -2,7 +2,6 @@
 /// \file
 /// \brief Breadth-first order: a seed fill (Smith's tint fill) over each ray-tree path.
 #include <cstdint>
-#include <deque>
 #include <utility>
 #include <vector>
 
@@ -54,8 +53,25 @@ private:
     std::vector<int> slot_;
     std::vector<State> state_;
     std::vector<int> byPixel_;  ///< the path's pixels (band-local), ascending: the seed scan
-    std::deque<int> queue_;
-    std::deque<int> pending_;
+    /// First in, first out, in a vector that keeps its memory (a deque frees and takes a
+    /// block every hundred-odd pixels: allocations that grow with the rays)
+    struct PixelQueue {
+        std::vector<int> items;
+        std::size_t head = 0;
+        bool empty() const { return head == items.size(); }
+        std::size_t size() const { return items.size() - head; }
+        int front() const { return items[head]; }
+        void push_back(int pixel) { items.push_back(pixel); }
+        void pop_front() {
+            if (++head == items.size()) clear();
+        }
+        void clear() {
+            items.clear();
+            head = 0;
+        }
+    };
+    PixelQueue queue_;
+    PixelQueue pending_;
     int scan_ = 0;
     int inflight_ = -1;
     bool inflightSeed_ = false;
