@@ -9,6 +9,8 @@
 #include <glm/geometric.hpp>
 
 #include "render/render_session.h"
+#include "search/accelerator.h"
+#include "search/answer_table.h"
 #include "scene/builtin_scenes.h"
 #include "scene/nff_reader.h"
 
@@ -199,4 +201,34 @@ TEST_CASE("on cube:5 at 512x512 blocker+ makes at most a fifth of the tests of n
     REQUIRE(paper.counters().intersectionTests * 100 <= 21 * none.counters().intersectionTests);
     // Leaving a list early never tests more
     REQUIRE(plus.counters().intersectionTests < paper.counters().intersectionTests);
+}
+
+TEST_CASE("a render answered from a table of recorded answers asks the same questions and makes the same image",
+          "[session][bench]") {
+    // How bench measures what a render costs besides searching: replay must be faithful
+    auto scene = std::make_shared<const Scene>(makeBuiltin("cube:4"));
+    for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) {
+        RenderOptions o;
+        o.width = o.height = 40;
+        o.order = order;
+        AnswerTable table;
+        RenderSession recorded(scene, o, std::make_unique<RecordingSearch>(*scene, makeCompleteSearch(AccelKind::Linear, *scene), table));
+        recorded.run();
+        REQUIRE(table.size() == recorded.counters().completeSearches);
+        auto search = std::make_unique<TableSearch>(*scene, table);
+        const TableSearch& replayed = *search;
+        RenderSession replay(scene, o, std::move(search));
+        replay.run();
+        REQUIRE(replayed.asked() == table.size());
+        REQUIRE(replay.counters().totalRays() == recorded.counters().totalRays());
+        REQUIRE(replay.counters().intersectionTests == 0);
+        REQUIRE(replay.image().rgb8() == recorded.image().rgb8());
+        // A table that is one answer short is noticed
+        table.pop_back();
+        auto shorter = std::make_unique<TableSearch>(*scene, table);
+        const TableSearch& short_ = *shorter;
+        RenderSession again(scene, o, std::move(shorter));
+        again.run();
+        REQUIRE(short_.asked() > table.size());
+    }
 }

@@ -10,6 +10,7 @@
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "scene/builtin_scenes.h"
+#include "search/answer_table.h"
 #include "search/embree_search.h"
 
 namespace rc::cli {
@@ -28,7 +29,26 @@ struct Config {
     AccelKind accel;
     CacheKind cache;
     OrderKind order;
+    bool replay = false;  ///< no search: answers from a table (what a render costs besides)
 };
+
+/// The answers an uncached linear render of `o` gets, in the order it asks for them.
+AnswerTable recordAnswers(const std::shared_ptr<const Scene>& scene, RenderOptions o) {
+    AnswerTable table;
+    o.cache = CacheKind::None;
+    RenderSession session(scene, o, std::make_unique<RecordingSearch>(*scene, makeCompleteSearch(o.accel, *scene), table));
+    session.run();
+    return table;
+}
+
+/// One render of `o` answered from `table`, on one thread, as renderParallel would count it.
+ParallelRun replay(const std::shared_ptr<const Scene>& scene, const RenderOptions& o, const AnswerTable& table) {
+    RenderSession session(scene, o, std::make_unique<TableSearch>(*scene, table));
+    session.run();
+    ParallelRun run;
+    run.counters = session.counters();
+    return run;
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -43,9 +63,12 @@ int bench(const BenchArgs& a) {
             for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) configs.push_back({accel, cache, order});
     }
     if (embreeAvailable()) configs.push_back({AccelKind::Embree, CacheKind::None, OrderKind::Scanline});
+    // What a render costs besides searching: no cache, each order, answers from a table
+    for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst})
+        configs.push_back({AccelKind::Linear, CacheKind::None, order, true});
 
     std::ostringstream csv;
-    csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree\n";
+    csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree,ns_per_ray\n";
     for (const std::string& spec : a.scenes) {
         auto scene = std::make_shared<const Scene>(loadScene(spec, a.flags.seed));
         RenderOptions base = a.flags.options();
@@ -53,7 +76,16 @@ int bench(const BenchArgs& a) {
         if (base.height <= 0) base.height = base.width;
         std::vector<Config> run;
         for (const Config& c : configs)
-            if (c.accel != AccelKind::Linear || scene->size() <= a.linearLimit) run.push_back(c);
+            if (c.accel != AccelKind::Linear || c.replay || scene->size() <= a.linearLimit) run.push_back(c);
+        // The answers each order asks for, recorded once by an uncached render (untimed)
+        std::vector<AnswerTable> tables(2);
+        for (const Config& c : run) {
+            if (!c.replay) continue;
+            RenderOptions o = base;
+            o.order = c.order;
+            o.accel = scene->size() <= a.linearLimit ? AccelKind::Linear : AccelKind::Bvh;
+            tables[c.order == OrderKind::Scanline ? 0 : 1] = recordAnswers(scene, o);
+        }
         std::vector<std::vector<double>> times(run.size());
         std::vector<Counters> counts(run.size());
         // [bench-interleave]
@@ -64,7 +96,9 @@ int bench(const BenchArgs& a) {
                 o.cache = run[c].cache;
                 o.order = run[c].order;
                 const double start = processSeconds();
-                const ParallelRun result = renderParallel(scene, o, a.threads);
+                const ParallelRun result = run[c].replay
+                    ? replay(scene, o, tables[run[c].order == OrderKind::Scanline ? 0 : 1])
+                    : renderParallel(scene, o, a.threads);
                 times[c].push_back(processSeconds() - start);
                 counts[c] = result.counters;
             }
@@ -75,21 +109,36 @@ int bench(const BenchArgs& a) {
             if (run[c].accel == AccelKind::Embree) embreeRate = double(counts[c].totalRays()) / median(times[c]);
         std::printf("\n%s: %d objects, %dx%d, %d thread(s), median of %d\n", scene->name.c_str(), scene->size(),
                     base.width, base.height, a.threads, a.repeat);
-        std::printf("  %-8s %-9s %-9s %9s %12s %11s %10s\n", "accel", "cache", "order", "seconds", "Mrays/s",
-                    "tests/ray", "vs embree");
+        std::printf("  %-8s %-9s %-9s %9s %12s %9s %11s %10s\n", "accel", "cache", "order", "seconds", "Mrays/s",
+                    "ns/ray", "tests/ray", "vs embree");
+        double replayScanline = 0.0;  // seconds of the scanline render answered from a table
         for (std::size_t c = 0; c < run.size(); ++c) {
             const double t = median(times[c]);
             const double rays = double(counts[c].totalRays());
             const double rate = rays / t;
             const double perRay = double(counts[c].intersectionTests) / rays;
             const double vsEmbree = embreeRate > 0.0 ? rate / embreeRate : 0.0;
-            std::printf("  %-8s %-9s %-9s %9.3f %12.3f %11.2f %10.2f\n", std::string(toString(run[c].accel)).c_str(),
+            const std::string accel = run[c].replay ? "table" : std::string(toString(run[c].accel));
+            if (run[c].replay && run[c].order == OrderKind::Scanline) replayScanline = t;
+            std::printf("  %-8s %-9s %-9s %9.3f %12.3f %9.1f %11.2f %10.2f\n", accel.c_str(),
                         std::string(toString(run[c].cache)).c_str(), std::string(toString(run[c].order)).c_str(), t,
-                        rate / 1e6, perRay, vsEmbree);
-            csv << scene->name << ',' << toString(run[c].accel) << ',' << toString(run[c].cache) << ','
-                << toString(run[c].order) << ',' << a.threads << ',' << t << ',' << rays << ',' << rate << ',' << perRay
-                << ',' << vsEmbree << '\n';
+                        rate / 1e6, 1e9 / rate, perRay, vsEmbree);
+            csv << scene->name << ',' << accel << ',' << toString(run[c].cache) << ',' << toString(run[c].order) << ','
+                << (run[c].replay ? 1 : a.threads) << ',' << t << ',' << rays << ',' << rate << ',' << perRay << ','
+                << vsEmbree << ',' << 1e9 / rate << '\n';
         }
+        // [bench-cost-per-test]
+        // A sphere test of the uncached scan: its time less what the same render costs
+        // besides searching (answered from a table), over its tests
+        std::printf("  table: no search, the answers replayed from a table: what a render costs besides searching\n");
+        for (std::size_t c = 0; c < run.size(); ++c) {
+            if (run[c].replay || run[c].accel != AccelKind::Linear || run[c].cache != CacheKind::None) continue;
+            const double tests = double(counts[c].intersectionTests);
+            if (a.threads == 1 && replayScanline > 0.0 && tests > 0.0)
+                std::printf("  linear scan, no cache: %.2f ns per object test ((%.3f s - %.3f s) / %.0f tests)\n",
+                            1e9 * (median(times[c]) - replayScanline) / tests, median(times[c]), replayScanline, tests);
+        }
+        // [bench-cost-per-test]
         if (scene->size() > a.linearLimit)
             std::printf("  (linear scan left out: more than %d objects; --linear-limit to change)\n", a.linearLimit);
     }
