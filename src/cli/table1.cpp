@@ -11,6 +11,8 @@
 #include "cli/cpu_clock.h"
 #include "render/output_files.h"
 #include "scene/builtin_scenes.h"
+#include "search/accelerator.h"
+#include "search/answer_table.h"
 
 namespace rc::cli {
 
@@ -50,7 +52,8 @@ int table1(const Table1Args& a) {
     if (flags.height == 0) flags.height = flags.width;
     std::ostringstream csv;
     csv << "scene,cache,order,seconds,time_ratio,intersection_tests,tests_ratio,complete_searches,"
-           "beam_nodes,searches_per_beam,paper_time_ratio\n";
+           "beam_nodes,searches_per_beam,paper_time_ratio,misses,besides_search_seconds,test_ns,"
+           "predicted_time_ratio,own_ns_per_miss,rays\n";
     std::printf("Table 1: %s at %dx%d, depth %d, median of %d runs; time and intersection tests\n"
                 "relative to no cache, complete searches per beam-tree node, the paper's figure beside.\n",
                 a.scenes.empty() ? "cube:N" : "the scenes given", flags.width, flags.height, flags.depth, repeat_);
@@ -64,7 +67,26 @@ int table1(const Table1Args& a) {
         std::vector<std::vector<double>> times(configs);
         std::vector<Counters> counts(configs);
         BeamTreeStats beams;
+        // What a render costs besides searching, in each order: the uncached render's
+        // answers, recorded once, then replayed from the table (timed with the others)
+        std::vector<AnswerTable> tables(2);
+        std::vector<std::vector<double>> replayTimes(2);
+        for (int k = 0; k < 2; ++k) {
+            flags.cache = "none";
+            flags.order = k == 0 ? "scanline" : "bfs";
+            const RenderOptions o = flags.options();
+            RenderSession session(scene, o, std::make_unique<RecordingSearch>(*scene, makeCompleteSearch(o.accel, *scene), tables[k]));
+            session.run();
+        }
         for (int r = 0; r < repeat_; ++r) {
+            for (int k = 0; k < 2; ++k) {
+                flags.cache = "none";
+                flags.order = k == 0 ? "scanline" : "bfs";
+                RenderSession session(scene, flags.options(), std::make_unique<TableSearch>(*scene, tables[k]));
+                const double start = threadSeconds();
+                session.run();
+                replayTimes[k].push_back(threadSeconds() - start);
+            }
             for (int c = 0; c < configs; ++c) {
                 flags.cache = kConfigs[c].cache;
                 flags.order = kConfigs[c].order;
@@ -81,10 +103,22 @@ int table1(const Table1Args& a) {
         }
         const double t0 = median(times[0]);
         const double tests0 = double(counts[0].intersectionTests);
-        std::printf("\n%s: %d objects; beam tree %lld nodes, %.2f rays per pixel, coherence %.2e\n",
+        // [cost-model]
+        // An object test: the uncached render less what it costs besides searching, per test.
+        // The counts then predict each configuration's time as if the cache's own work
+        // (lookups, building lists and cylinders, the order's bookkeeping beyond the
+        // replay) were free; the rest, per miss, is that work.
+        const double besides[2] = {median(replayTimes[0]), median(replayTimes[1])};
+        const double testSeconds = (t0 - besides[0]) / tests0;
+        // [cost-model]
+        std::printf("\n%s: costs measured in this run: an object test %.2f ns; a ray besides searching "
+                    "%.0f ns (scanline), %.0f ns (bfs)\n",
+                    scene->name.c_str(), 1e9 * testSeconds, 1e9 * besides[0] / double(counts[0].totalRays()),
+                    1e9 * besides[1] / double(counts[0].totalRays()));
+        std::printf("%s: %d objects; beam tree %lld nodes, %.2f rays per pixel, coherence %.2e\n",
                     scene->name.c_str(), scene->size(), (long long)beams.nodes, beams.averageRayTreeSize, beams.coherence);
-        std::printf("  %-20s %8s %7s %8s %10s %13s\n", "configuration", "seconds", "time", "paper", "tests",
-                    "searches/beam");
+        std::printf("  %-20s %8s %7s %8s %10s %13s %10s %12s\n", "configuration", "seconds", "time", "paper", "tests",
+                    "searches/beam", "predicted", "ns/miss own");
         for (int c = 0; c < configs; ++c) {
             const double t = median(times[c]);
             const double perBeam = beams.nodes ? double(counts[c].completeSearches) / double(beams.nodes) : 0.0;
@@ -94,11 +128,17 @@ int table1(const Table1Args& a) {
             else if (it != kPaper.end() && std::string(kConfigs[c].cache) == "blocker")
                 paper = std::to_string(std::string(kConfigs[c].order) == "bfs" ? it->second.second : it->second.first).substr(0, 4);
             const std::string name = std::string(kConfigs[c].cache) + ", " + kConfigs[c].order;
-            std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f\n", name.c_str(), t, t / t0, paper.c_str(),
-                        double(counts[c].intersectionTests) / tests0, perBeam);
+            const double base = besides[std::string(kConfigs[c].order) == "bfs" ? 1 : 0];
+            const double predicted = (base + testSeconds * double(counts[c].intersectionTests)) / t0;
+            const double misses = double(counts[c].misses);
+            const double ownPerMiss = misses > 0.0 ? 1e9 * (t - predicted * t0) / misses : 0.0;
+            std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f %10.3f %12.0f\n", name.c_str(), t, t / t0, paper.c_str(),
+                        double(counts[c].intersectionTests) / tests0, perBeam, predicted, ownPerMiss);
             csv << scene->name << ',' << kConfigs[c].cache << ',' << kConfigs[c].order << ',' << t << ',' << t / t0 << ','
                 << counts[c].intersectionTests << ',' << double(counts[c].intersectionTests) / tests0 << ','
-                << counts[c].completeSearches << ',' << beams.nodes << ',' << perBeam << ',' << paper << '\n';
+                << counts[c].completeSearches << ',' << beams.nodes << ',' << perBeam << ',' << paper << ','
+                << counts[c].misses << ',' << base << ',' << 1e9 * testSeconds << ',' << predicted << ','
+                << ownPerMiss << ',' << counts[c].totalRays() << '\n';
         }
     }
     if (!csv_.empty()) writeTextFile(csv_, csv.str());
