@@ -216,7 +216,7 @@ void MainWindow::startCompare() {
         reportError_("Cannot start the compared render", QString::fromUtf8(e.what()));
     }
     QSplitter* split = qobject_cast<QSplitter*>(centralWidget());
-    if (split) split->setSizes({1000, 1000, sceneView_->isVisible() ? 1000 : 0});
+    if (split) split->setSizes({1000, 1000, sceneView_->isHidden() ? 0 : 1000});
     compareView_->fit();
 }
 
@@ -277,15 +277,17 @@ void MainWindow::setSceneView(bool on) {
         sceneViewAct_->setChecked(on);
     }
     if (QSplitter* split = qobject_cast<QSplitter*>(centralWidget()))
-        split->setSizes({1000, compareView_->isVisible() ? 1000 : 0, on ? 1000 : 0});
+        split->setSizes({1000, compareView_->isHidden() ? 0 : 1000, on ? 1000 : 0});
     viewsChanged();
 }
 
 void MainWindow::viewsChanged() {
     view_->update();
     if (compareChoice_) compareView_->update();
-    if (sceneView_->isVisible())
+    if (!sceneView_->isHidden()) {
+        sceneView_->setLayers(overlays_.cylinder, overlays_.hull);
         if (const SessionState* s = controller_.state()) sceneView_->setSketch(SceneSketch::of(*s, selection_));
+    }
 }
 
 void MainWindow::buildToolbars() {
@@ -421,7 +423,8 @@ void MainWindow::buildToolbars() {
         connect(c, &QCheckBox::toggled, this, [this, field](bool on) {
             overlays_.*field = on;
             view_->setGridEnabled(overlays_.grid);
-            view_->update();
+            compareView_->setGridEnabled(overlays_.grid);
+            viewsChanged();
         });
         show->addWidget(c);
         return c;
@@ -640,7 +643,7 @@ void MainWindow::setOverlays(const Overlays& o) {
     missesBox_->setChecked(o.misses);
     gridBox_->setChecked(o.grid);
     view_->setGridEnabled(o.grid);
-    view_->update();
+    viewsChanged();
 }
 
 void MainWindow::setHeatmap(Heatmap h) {

@@ -13,6 +13,7 @@
 #include <QWheelEvent>
 #include <glm/geometric.hpp>
 
+#include "geometry/safety_cylinder.h"
 #include "palette.h"
 #include "projector.h"
 
@@ -82,6 +83,20 @@ SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel) {
     if (f.deferred) k.rays.push_back({f.ray.o, f.segmentEnd(scene), f.kind, true});
     k.hull = hullOf(s, f);
     k.cylinder = cylinderOf(s, f);
+    // The object that sets the cylinder's radius: nearest its axis, the ray's own excepted
+    const rc::SafetyCylinder& c = k.cylinder.cylinder;
+    if (c.radius >= 0.0) {
+        double best = rc::kNoHit;
+        for (int id = 0; id < scene.size(); ++id) {
+            if (id == f.hit || id == f.origin.object) continue;
+            const rc::Sphere& b = scene.objects[std::size_t(id)].bound;
+            const double gap = rc::segmentDistance(b.c, c.a, c.b) - b.r;
+            if (gap < best) {
+                best = gap;
+                k.limiter = id;
+            }
+        }
+    }
     return k;
 }
 
@@ -154,8 +169,8 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent) {
     row->addStretch(1);
     row->addWidget(angleBox_);
     row->addWidget(wholeBox_);
-    layout->addLayout(row);
     layout->addStretch(1);
+    layout->addLayout(row);
     connect(angleBox_, &QComboBox::activated, this, [this](int i) { setAngle(SceneAngle(angleBox_->itemData(i).toInt())); });
     connect(wholeBox_, &QCheckBox::toggled, this, &SceneView::setWholeScene);
 }
@@ -170,6 +185,12 @@ void SceneView::setAngle(SceneAngle a) {
     yaw_ = pitch_ = 0.0;
     zoom_ = 1.0;
     angleBox_->setCurrentIndex(angleBox_->findData(int(a)));
+    update();
+}
+
+void SceneView::setLayers(bool cylinder, bool hull) {
+    cylinderShown_ = cylinder;
+    hullShown_ = hull;
     update();
 }
 
@@ -213,6 +234,8 @@ void SceneView::frame() {
         }
         if (k.focus->hit >= 0 && k.focus->hit < int(k.bodies.size()))
             add(k.bodies[std::size_t(k.focus->hit)].bound.c, k.bodies[std::size_t(k.focus->hit)].bound.r);
+        if (cylinderShown_ && k.limiter >= 0 && k.cylinder.cylinder.radius > 0.0)
+            add(k.bodies[std::size_t(k.limiter)].bound.c, k.bodies[std::size_t(k.limiter)].bound.r);
         if (angle_ != SceneAngle::Along) {
             for (const auto& s : k.rays)
                 if (s.focus) {
@@ -229,12 +252,13 @@ void SceneView::frame() {
     }
     const double margin = 0.12 * std::max(box.width(), box.height()) + 1e-9;
     box.adjust(-margin, -margin, margin, margin);
-    const double top = 2.0 * QFontMetricsF(font()).height() + 16;  // room for the caption and the angle box
-    const double w = std::max(1.0, width() - 16.0), h = std::max(1.0, height() - top - 8.0);
+    // Room for the caption above and the angle box below
+    const double top = 4.0 * QFontMetricsF(font()).height() + 16, bottom = angleBox_->sizeHint().height() + 16;
+    const double w = std::max(1.0, width() - 16.0), h = std::max(1.0, height() - top - bottom);
     scale_ = zoom_ * std::min(w / box.width(), h / box.height());
     centre_ = box.center();
-    // Shift down so the drawing clears the caption
-    centre_.ry() += (top - 8.0) / 2.0 / scale_;
+    // Shift so the drawing sits between the caption and the angle box
+    centre_.ry() += (top - bottom) / 2.0 / scale_;
 }
 
 void SceneView::paintEvent(QPaintEvent*) {
@@ -265,7 +289,7 @@ void SceneView::paintEvent(QPaintEvent*) {
     });
     for (int id : order) {
         const SceneSketch::Body& b = k.bodies[std::size_t(id)];
-        const bool bold = blocker[std::size_t(id)] || id == target ||
+        const bool bold = blocker[std::size_t(id)] || id == target || (cylinderShown_ && id == k.limiter) ||
                           (k.focus && (id == k.focus->hit || id == k.focus->origin.object));
         const QColor line = bold ? QColor(235, 235, 235) : QColor(150, 150, 160);
         if (b.shape == rc::Shape::Polygon) {
@@ -281,7 +305,7 @@ void SceneView::paintEvent(QPaintEvent*) {
         }
     }
     // The blocker hull of origin and target, its potential blockers, origin and target
-    if (k.hull.valid()) {
+    if (k.hull.valid() && hullShown_) {
         p.setPen(pen(palette::kHull, 2.5 * lw));
         p.setBrush(withAlpha(palette::kHull, 45));
         p.drawPolygon(hull(k.hull.a, k.hull.b));
@@ -297,7 +321,7 @@ void SceneView::paintEvent(QPaintEvent*) {
     }
     // The cylinder of safety: a capsule, so its outline is the hull of its end discs
     const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
-    if (k.focus && cyl.radius > 0.0) {
+    if (k.focus && cyl.radius > 0.0 && cylinderShown_) {
         p.setPen(pen(palette::kCylinder, 2.5 * lw, k.cylinder.cached ? Qt::SolidLine : Qt::DashLine));
         p.setBrush(withAlpha(palette::kCylinder, 60));
         p.drawPolygon(hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius}));
@@ -356,12 +380,13 @@ void SceneView::paintEvent(QPaintEvent*) {
     };
     label(eye, "eye", Qt::white);
     for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), QColor(255, 214, 0));
-    if (k.hull.valid()) {
+    if (k.hull.valid() && hullShown_) {
         const rc::Sphere& a = k.hull.a;
         label(toWidget(a.c) + QPointF(0, a.r * scale_ * 0.7), "origin", palette::kOrigin);
         label(toWidget(k.hull.b.c) + QPointF(k.hull.b.r * scale_ * 0.5, -k.hull.b.r * scale_ * 0.7),
               k.hull.targetObject >= 0 ? QString("target #%1").arg(k.hull.targetObject) : QString("target"), palette::kTarget);
         for (int id : k.hull.blockers) {
+            if (id == k.hull.targetObject || (k.focus && id == k.focus->origin.object)) continue;  // labelled already
             const rc::Sphere& b = k.bodies[std::size_t(id)].bound;
             label(toWidget(b.c) + QPointF(b.r * scale_ * 0.7, b.r * scale_), QString("blocker #%1").arg(id), palette::kBlocker);
         }
@@ -374,18 +399,24 @@ void SceneView::paintEvent(QPaintEvent*) {
                               : angle_ == SceneAngle::Top   ? "Top view"
                                                             : "Front view (no perspective)";
     cap << (k.focus ? angleName + ": " + k.focusLabel : angleName + ": no ray in focus");
-    if (k.hull.valid())
-        cap << QString("blocker hull of origin (r %1) and target (r %2): %3 potential blocker%4")
+    if (k.hull.valid() && hullShown_) {
+        QStringList ids;
+        for (int id : k.hull.blockers)
+            ids << QString("#%1%2").arg(id).arg(k.focus && id == k.focus->origin.object ? " (the origin)" : "");
+        cap << QString("blocker hull of origin (r %1) and target (r %2): %3 potential blocker%4%5")
                    .arg(num(k.hull.a.r), num(k.hull.b.r)).arg(k.hull.blockers.size())
-                   .arg(k.hull.blockers.size() == 1 ? "" : "s");
-    if (k.focus && cyl.radius > 0.0) {
-        QString c = QString("cylinder of safety%1: radius %2").arg(k.cylinder.cached ? "" : " (around this ray)", num(cyl.radius));
+                   .arg(k.hull.blockers.size() == 1 ? "" : "s").arg(ids.isEmpty() ? "" : ": " + ids.join(", "));
+    }
+    if (k.focus && cyl.radius > 0.0 && cylinderShown_) {
+        cap << QString("cylinder of safety%1: radius %2").arg(k.cylinder.cached ? "" : " (around this ray)", num(cyl.radius));
+        QString c;
         const int hit = k.focus->hit;
         if (hit >= 0 && hit < int(k.bodies.size()))
-            c += QString(", %1% of the radius of #%2 (%3)")
-                     .arg(num(100.0 * cyl.radius / k.bodies[std::size_t(hit)].bound.r)).arg(hit)
-                     .arg(num(k.bodies[std::size_t(hit)].bound.r));
-        cap << c;
+            c = QString("%1% of the radius of the sphere hit, #%2 (%3)")
+                    .arg(num(100.0 * cyl.radius / k.bodies[std::size_t(hit)].bound.r)).arg(hit)
+                    .arg(num(k.bodies[std::size_t(hit)].bound.r));
+        if (k.limiter >= 0) c += QString("%1#%2 sets it").arg(c.isEmpty() ? "" : "; ").arg(k.limiter);
+        if (!c.isEmpty()) cap << c;
     }
     caption_ = cap.join("\n");
     double cw = 0;

@@ -42,6 +42,7 @@ struct SceneSketch {
     FocusHull hull;
     FocusCylinder cylinder;
     bool hasCylinder = false;         ///< the cache keeps cylinders (or none: drawn around the ray)
+    int limiter = -1;                 ///< the object nearest the cylinder's axis: it sets the radius
 
     /// The sketch of `s` with the ray `sel` puts in focus.
     static SceneSketch of(const SessionState& s, const Selection& sel);
@@ -71,6 +72,8 @@ public:
     void setOrbit(double yaw, double pitch);
     double yaw() const { return yaw_; }
     double pitch() const { return pitch_; }
+    /// Which of the focused ray's shapes are drawn (the overlay toggles).
+    void setLayers(bool cylinder, bool hull);
     /// Frame the whole scene rather than the ray in focus.
     void setWholeScene(bool on);
     /// Where world point `p` is drawn (widget coordinates), in the current framing.
@@ -95,6 +98,7 @@ private:
     SceneAngle angle_ = SceneAngle::Side;
     double yaw_ = 0.0, pitch_ = 0.0, zoom_ = 1.0;
     bool whole_ = false;
+    bool cylinderShown_ = true, hullShown_ = true;
     SceneBasis basis_;
     double scale_ = 1.0;
     QPointF centre_;  ///< world (x, y) at the middle of the drawing area

@@ -47,7 +47,8 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
         w.sceneView()->setOrbit(o.orbitYaw, o.orbitPitch);
     }
     w.refresh();
-    if (o.firstImpression) w.focusShowcase();
+    // The scene view with nothing selected: a ray worth seeing from the side
+    if (o.firstImpression || (o.sceneView && o.select.x() < 0)) w.focusShowcase();
     if (o.select.x() >= 0) {
         QString why;
         if (!w.selectRay(o.select.x(), o.select.y(), o.selectPath, why)) {
