@@ -229,7 +229,11 @@ void MainWindow::syncCompare(bool now) {
     SessionState* c = compare_.state();
     if (!c) return;  // the compared render is catching up on its worker
     const std::int64_t want = s->session().steps(), have = c->session().steps();
-    if (want == have) return;
+    if (want == have) {
+        // Every render has the same rays: when the first is done, so is the second
+        if (s->session().done() && !c->session().done()) c->step();
+        return;
+    }
     // A short way forwards (a step, a play tick) on this thread; else on the worker,
     // rebuilding and replaying when it lies behind
     constexpr std::int64_t kOnThisThread = 2000;
@@ -309,7 +313,10 @@ void MainWindow::buildToolbars() {
         }
     }
     const QDir scenes(scenesFolder());
-    for (const QFileInfo& f : scenes.entryInfoList({"*.nff"}, QDir::Files, QDir::Name)) {
+    // By suffix, not a "*.nff" name filter: that compiles a regular expression, whose
+    // machine code (PCRE2's JIT) valgrind cannot follow
+    for (const QFileInfo& f : scenes.entryInfoList(QDir::Files, QDir::Name)) {
+        if (f.suffix().toLower() != "nff") continue;
         sceneBox_->addItem(f.fileName(), f.absoluteFilePath());
         sceneBox_->setItemData(sceneBox_->count() - 1, f.absoluteFilePath(), Qt::ToolTipRole);
     }

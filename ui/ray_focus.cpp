@@ -59,7 +59,9 @@ std::optional<RayFocus> RayFocus::ofEvent(const SessionState& s, int index) {
     f.hit = r.hit;
     f.ray = {r.rayOrigin(), r.rayDirection()};
     f.t = r.t;
-    f.tmax = r.tmax;
+    // A shadow ray ends at its light
+    if (f.kind == rc::RayKind::Shadow && f.light >= 0 && std::size_t(f.light) < s.scene().lights.size())
+        f.tmax = glm::length(s.scene().lights[std::size_t(f.light)].position - f.ray.o);
     f.deferred = r.deferred();
     return f;
 }
