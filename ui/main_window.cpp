@@ -262,9 +262,8 @@ void MainWindow::refreshCompare() {
     if (s) {
         const double a = double(s->session().counters().intersectionTests);
         const double b = double(c->session().counters().intersectionTests);
-        extra << QString("tests %1, left %2: %3%4 (%5x the left)")
-                     .arg(b, 0, 'f', 0).arg(a, 0, 'f', 0).arg(b >= a ? "+" : "").arg(b - a, 0, 'f', 0)
-                     .arg(a > 0 ? b / a : 0.0, 0, 'f', 2);
+        extra << QString("tests %1 = %2x the left's %3").arg(b, 0, 'f', 0).arg(a > 0 ? b / a : 0.0, 0, 'f', 2).arg(a, 0, 'f', 0)
+              << QString("difference %1%2 tests").arg(b >= a ? "+" : "").arg(b - a, 0, 'f', 0);
         if (s->session().steps() != c->session().steps())
             extra << QString("catching up: step %1 of %2").arg(c->session().steps()).arg(s->session().steps());
         stats_->refresh(s, c);

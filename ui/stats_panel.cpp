@@ -6,6 +6,7 @@
 #include <QChartView>
 #include <QLabel>
 #include <QLineSeries>
+#include <QScrollArea>
 #include <QValueAxis>
 #include <QVBoxLayout>
 
@@ -19,7 +20,16 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     text_ = new QLabel(this);
     text_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     text_->setWordWrap(true);
-    layout->addWidget(text_);
+    text_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    // In a scroll area: long text (large fonts, a compared render's table) scrolls rather
+    // than make the window taller than the screen
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(text_);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumHeight(80);
+    layout->addWidget(scroll, 1);
     chart_ = new QChart;
     hits_ = new QLineSeries;
     hits_->setName("hits");
@@ -55,8 +65,8 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     chart_->setMargins(QMargins(2, 2, 2, 2));
     auto* view = new QChartView(chart_, this);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumHeight(200);
-    layout->addWidget(view, 1);
+    view->setMinimumHeight(130);
+    layout->addWidget(view, 2);
 }
 
 void StatsPanel::showProgress(qint64 steps, double progress) {
