@@ -78,10 +78,11 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
     const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
     const QCommandLineOption large("large-fonts", "bigger text, for a projector");
+    const QCommandLineOption present("present", "presentation mode: the panels hidden, large fonts (F11 in the window)");
     const QCommandLineOption compare("compare", "run a second render (another cache and order) in lockstep beside the first, e.g. none:scanline", "cache:order");
     const QCommandLineOption sceneView("scene-view", "show the 3D scene beside the image: side (across the ray in focus, the paper's Figure 2), along (down the ray, Figure 1), top or front", "angle");
     const QCommandLineOption orbit("orbit", "--scene-view: turn the view by YAW and PITCH degrees", "yaw,pitch");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large, compare, sceneView, orbit})
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large, present, compare, sceneView, orbit})
         p.addOption(o);
     // --scene-view may come alone (the side view): give it its default value
     QStringList argv = args;
@@ -172,6 +173,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (!ok || out.zoom < 0.1 || out.zoom > 200) { message = "--zoom must be a number in [0.1, 200]"; return ParseResult::Error; }
     }
     out.largeFonts = p.isSet(large);
+    out.present = p.isSet(present);
     if (p.isSet(compare)) {
         out.compare = parseCompare(p.value(compare), message);
         if (!out.compare) return ParseResult::Error;

@@ -52,6 +52,7 @@ struct GuiOptions {
     rc::AccelKind accel = rc::AccelKind::Linear;
     double zoom = 1.0;           ///< screenshots: zoom relative to "fit", about the ray being traced
     bool largeFonts = false;
+    bool present = false;        ///< presentation mode: panels hidden, large fonts
     std::optional<CompareChoice> compare;  ///< --compare CACHE:ORDER: a second render in lockstep
     bool sceneView = false;                ///< --scene-view: show the scene from the side
     SceneAngle sceneAngle = SceneAngle::Side;

@@ -314,6 +314,16 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
         small.setPointSizeF(small.pointSizeF() * f);
         p.setFont(small);
     }
+    {
+        // A caption wider than the view takes a smaller font rather than be cut off
+        double widest = 0;
+        for (const QString& c : caption) widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(c));
+        if (widest + 32 > area.width() && widest > 0) {
+            QFont small = p.font();
+            small.setPointSizeF(small.pointSizeF() * std::max(0.6, (area.width() - 32) / widest));
+            p.setFont(small);
+        }
+    }
     const QFontMetricsF fm(p.font());
     const double lh = fm.height() + 2;
     p.setRenderHint(QPainter::Antialiasing, true);

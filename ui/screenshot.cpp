@@ -19,6 +19,7 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
         ok = false;
     });
     if (o.largeFonts) w.setLargeFonts(true);
+    if (o.present) w.setPresentation(true);
     w.setOverlays(o.overlays);
     // Choose everything first, then load: one session is built, with these choices
     w.setCache(o.cache);

@@ -65,7 +65,7 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     chart_->setMargins(QMargins(2, 2, 2, 2));
     auto* view = new QChartView(chart_, this);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumHeight(130);
+    view->setMinimumHeight(200);
     layout->addWidget(view, 2);
 }
 
