@@ -371,7 +371,9 @@ void SceneView::paintEvent(QPaintEvent*) {
     // Labels
     const QFontMetricsF fm(font());
     auto label = [&](const QPointF& at, const QString& t, const QColor& c) {
-        const QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
+        QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
+        if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
+        if (r.left() < 4) r.moveLeft(4);
         p.setPen(Qt::NoPen);
         p.setBrush(QColor(0, 0, 0, 150));
         p.drawRoundedRect(r, 3, 3);
@@ -421,13 +423,23 @@ void SceneView::paintEvent(QPaintEvent*) {
     caption_ = cap.join("\n");
     double cw = 0;
     for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
-    const QRectF box(8, 8, cw + 16, fm.height() * cap.size() + 8);
+    // Too wide for the view: a smaller font, not a cut-off line
+    QFontMetricsF cfm = fm;
+    if (cw + 32 > width() && cw > 0) {
+        QFont small = font();
+        small.setPointSizeF(small.pointSizeF() * std::max(0.6, (width() - 32) / cw));
+        p.setFont(small);
+        cfm = QFontMetricsF(small);
+        cw = 0;
+        for (const QString& c : cap) cw = std::max(cw, cfm.horizontalAdvance(c));
+    }
+    const QRectF box(8, 8, cw + 16, cfm.height() * cap.size() + 8);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
     p.drawRoundedRect(box, 6, 6);
     p.setPen(Qt::white);
     for (int i = 0; i < cap.size(); ++i)
-        p.drawText(QRectF(16, 12 + i * fm.height(), cw, fm.height()), Qt::AlignVCenter | Qt::AlignLeft, cap[i]);
+        p.drawText(QRectF(16, 12 + i * cfm.height(), cw + 2, cfm.height()), Qt::AlignVCenter | Qt::AlignLeft, cap[i]);
 }
 
 void SceneView::mousePressEvent(QMouseEvent* e) { lastPos_ = e->position(); }
