@@ -80,6 +80,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(compareView_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
     connect(compareView_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
     comparePainter_.setKeysShown(false);
+    // The two views zoom and pan together: the same pixels side by side
+    auto follow = [this](ImageView* from, ImageView* to) {
+        connect(from, &ImageView::viewMoved, this, [this, from, to] {
+            if (!compareChoice_ || followingView_ || to->isHidden() || from->image().size() != to->image().size()) return;
+            followingView_ = true;
+            // The same image point at the same place relative to each view's centre
+            const QPointF shift = QPointF(to->width() - from->width(), to->height() - from->height()) / 2.0;
+            to->setZoom(from->zoom(), from->pan() + shift);
+            followingView_ = false;
+        });
+    };
+    follow(view_, compareView_);
+    follow(compareView_, view_);
     connect(&compare_, &SessionController::changed, this, &MainWindow::refreshCompare);
     connect(&compare_, &SessionController::snapshot, this, [this](const QImage& img, qint64, double) {
         if (heatmap_ == Heatmap::None) compareView_->setImage(img);

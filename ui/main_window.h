@@ -152,6 +152,7 @@ private:
     OverlayPainter comparePainter_;
     ImageView* compareView_ = nullptr;
     SceneView* sceneView_ = nullptr;
+    bool followingView_ = false;  ///< one view is copying the other's zoom and pan
     QComboBox* compareBox_ = nullptr;
     QAction* sceneViewAct_ = nullptr;
     std::shared_ptr<const rc::Scene> scene_;

@@ -290,3 +290,26 @@ TEST_CASE("A recorded direction stays within 1e-4 radians of the traced one", "[
     }
     REQUIRE(worst < 1e-4);
 }
+
+TEST_CASE("The compared view zooms and pans with the first", "[gui][compare][view]") {
+    Window f("pair");
+    QString why;
+    REQUIRE(f.w.setCompare("none:scanline", why));
+    f.goTo(500);
+    f.w.refresh();
+    QApplication::processEvents();
+    ImageView* a = f.w.imageView();
+    ImageView* b = f.w.compareView();
+    a->zoomAt(4.0, QPointF(a->width() / 2.0, a->height() / 2.0));
+    REQUIRE(b->zoom() == Approx(a->zoom()));
+    // The pixel under each view's centre is the same one
+    const auto pa = a->pixelAt(QPointF(a->width() / 2.0, a->height() / 2.0));
+    const auto pb = b->pixelAt(QPointF(b->width() / 2.0, b->height() / 2.0));
+    REQUIRE(pa);
+    REQUIRE(pb);
+    REQUIRE(*pa == *pb);
+    // And back: panning the second moves the first
+    b->setZoom(b->zoom(), b->pan() + QPointF(37, -21));
+    REQUIRE(a->pan().x() == Approx(b->pan().x() - (b->width() - a->width()) / 2.0));
+    REQUIRE(a->pan().y() == Approx(b->pan().y() - (b->height() - a->height()) / 2.0));
+}
