@@ -97,8 +97,11 @@ void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
     // What this scene and these options leave out (no shadow rays without lights, ...)
     for (const std::string& line : rc::leftOut(s.scene(), &s.options()))
         t += QString("<br><b>left out</b> %1").arg(QString::fromStdString(line).toHtmlEscaped());
-    // A compared render: both side by side, and how many tests the second makes more
+    // A compared render: both side by side, and how many tests the second makes more;
+    // first, so that it shows without scrolling
     if (other) {
+        const QString own = t;
+        t.clear();
         const rc::RenderSession& o = other->session();
         const rc::Counters& m = o.counters();
         auto name = [](const rc::RenderSession& r) {
@@ -109,7 +112,7 @@ void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
             return QString("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4%5</td></tr>")
                 .arg(what).arg(a, 0, 'f', 0).arg(b, 0, 'f', 0).arg(d > 0 ? "+" : "").arg(d, 0, 'f', 0);
         };
-        t += QString("<br><b>compared</b> at step %1%2<table cellspacing=0 cellpadding=2>"
+        t += QString("<b>compared</b> at step %1%2<table cellspacing=0 cellpadding=2>"
                      "<tr><th></th><th>%3</th><th>%4</th><th>difference</th></tr>")
                  .arg(o.steps()).arg(o.steps() == s.steps() ? "" : QString(" (catching up to %1)").arg(s.steps()))
                  .arg(name(s), name(o));
@@ -121,6 +124,7 @@ void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
         t += "</table>";
         if (n.intersectionTests > 0)
             t += QString("tests: %1x the left").arg(double(m.intersectionTests) / double(n.intersectionTests), 0, 'f', 2);
+        t += "<br>" + own;
     }
     text_->setText(t);
 
