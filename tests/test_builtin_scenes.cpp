@@ -62,7 +62,7 @@ int nearestSphere(const Scene& s, const Ray& ray, double& tHit) {
 
 TEST_CASE("builtinScenes lists every generator with a description", "[builtin]") {
     const auto list = builtinScenes();
-    REQUIRE(list.size() == 4);
+    REQUIRE(list.size() == 5);
     CHECK(list[0].name == "cube:N");
     for (const BuiltinInfo& b : list) {
         CHECK_FALSE(b.description.empty());
@@ -134,6 +134,28 @@ TEST_CASE("built-in scenes are deterministic for a seed and vary with it", "[bui
     // fill and pair are fixed scenes
     CHECK(sameScene(makeBuiltin("fill", 1), makeBuiltin("fill", 2)));
     CHECK(sameScene(makeBuiltin("pair", 1), makeBuiltin("pair", 2)));
+    CHECK(sameScene(makeBuiltin("trio", 1), makeBuiltin("trio", 2)));
+}
+
+TEST_CASE("trio puts its third sphere inside the hull of the other two, touching neither", "[builtin]") {
+    const Scene s = makeBuiltin("trio");
+    REQUIRE(s.spheres.size() == 3);
+    const Sphere &a = s.spheres[0], &b = s.spheres[1], &c = s.spheres[2];
+    CHECK(glm::length(c.c - a.c) > a.r + c.r);
+    CHECK(glm::length(c.c - b.c) > b.r + c.r);
+    // The hull of two balls holds every ball between them (centres and radii blended):
+    // the third lies wholly inside one of those
+    bool inside = false;
+    for (int k = 0; k <= 100; ++k) {
+        const double f = k / 100.0;
+        const Sphere m{a.c + (b.c - a.c) * f, a.r + (b.r - a.r) * f};
+        inside = inside || glm::length(c.c - m.c) + c.r <= m.r;
+    }
+    CHECK(inside);
+    // ... but off the axis between them, so most rays from one to the other pass it
+    const Vec3 axis = glm::normalize(b.c - a.c);
+    const Vec3 off = (c.c - a.c) - axis * glm::dot(c.c - a.c, axis);
+    CHECK(glm::length(off) > c.r);
 }
 
 TEST_CASE("cube:N is the same on every machine", "[builtin]") {

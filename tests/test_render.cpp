@@ -167,7 +167,7 @@ TEST_CASE("the SPD scenes load, render, and every cache gives the same image", "
 }
 
 TEST_CASE("every built-in scene gives the same image with every cache", "[builtin][exact]") {
-    for (const char* name : {"cube:3", "cube:5", "glass", "fill", "pair"}) {
+    for (const char* name : {"cube:3", "cube:5", "glass", "fill", "pair", "trio"}) {
         auto scene = shared(makeBuiltin(name));
         RenderSession reference(scene, sized(40, 40));
         reference.run();

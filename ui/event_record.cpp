@@ -1,13 +1,32 @@
 #include "event_record.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rcgui {
 
+namespace {
+// Octahedral encoding of unit vectors (Cigolle et al. 2014): the sphere folded onto a square
+float signOf(float v) { return v >= 0.0f ? 1.0f : -1.0f; }
+std::int16_t quantise(float v) { return std::int16_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 32767.0f)); }
+}  // namespace
+
+rc::Vec3 EventRecord::rayDirection() const {
+    float x = d[0] / 32767.0f, y = d[1] / 32767.0f;
+    const float z = 1.0f - std::abs(x) - std::abs(y);
+    if (z < 0.0f) {
+        const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
+        x = fx;
+        y = fy;
+    }
+    const rc::Vec3 v(x, y, z);
+    return v / std::sqrt(double(x) * x + double(y) * y + double(z) * z);
+}
+
 EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous) {
     EventRecord r;
     const rc::Query& q = e.task.query;
-    r.step = e.step;
+    r.step = std::int32_t(e.step);
     r.pixel = e.task.pixel;
     r.node = e.task.node;
     r.hit = e.lookup.known ? e.lookup.answer.object : -1;
@@ -20,13 +39,21 @@ EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous)
     r.reason = std::uint8_t(e.lookup.reason);
     r.flags = std::uint8_t((e.deferred ? Deferred : 0) | (e.lookup.searched ? Searched : 0) |
                            (q.origin.inside ? Inside : 0));
-    for (int k = 0; k < 3; ++k) {
-        r.o[k] = float(q.ray.o[k]);
-        r.d[k] = float(q.ray.d[k]);
+    for (int k = 0; k < 3; ++k) r.o[k] = float(q.ray.o[k]);
+    const rc::Vec3& v = q.ray.d;
+    const double l1 = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+    float x = float(v.x / l1), y = float(v.y / l1);
+    if (v.z < 0.0) {
+        const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
+        x = fx;
+        y = fy;
     }
+    r.d[0] = quantise(x);
+    r.d[1] = quantise(y);
     r.t = e.lookup.known && std::isfinite(e.lookup.answer.t) ? float(e.lookup.answer.t) : -1.0f;
-    r.tmax = std::isfinite(q.tmax) ? float(q.tmax) : -1.0f;
     return r;
 }
 
 }  // namespace rcgui
+
+static_assert(sizeof(rcgui::EventRecord) == 56, "an event record is 56 bytes");

@@ -7,12 +7,14 @@
 
 namespace rcgui {
 
-/// One traced (or deferred) ray, as the GUI keeps it: about 70 bytes instead of the
-/// full event, so a whole 512x512 render (close to a million events) fits in memory.
+/// One traced (or deferred) ray, as the GUI keeps it: 56 bytes instead of the full
+/// event, so a whole render (millions of events) fits in memory. The direction is kept
+/// as two 16-bit octahedral coordinates (within about 1e-4 radians), and a shadow ray's
+/// length is not kept: it is the distance from its origin to its light.
 struct EventRecord {
     enum Flags : std::uint8_t { Deferred = 1, Searched = 2, Inside = 4 };
 
-    std::int64_t step = 0;     ///< rays committed before this one
+    std::int32_t step = 0;     ///< rays committed before this one
     std::int32_t pixel = 0;    ///< y * width + x
     std::int32_t node = 0;     ///< ray-tree path in the cache tree
     std::int32_t hit = -1;     ///< object hit, -1 for nothing
@@ -25,16 +27,15 @@ struct EventRecord {
     std::uint8_t reason = 0;   ///< rc::MissReason
     std::uint8_t flags = 0;
     float o[3] = {0, 0, 0};    ///< ray origin
-    float d[3] = {0, 0, 1};    ///< ray direction
+    std::int16_t d[2] = {0, 0};  ///< ray direction, octahedral
     float t = -1.0f;           ///< hit distance, < 0 for none
-    float tmax = -1.0f;        ///< shadow rays: distance to the light, < 0 for none
 
     bool deferred() const { return flags & Deferred; }
     rc::RayKind rayKind() const { return rc::RayKind(kind); }
     rc::Decision rayDecision() const { return rc::Decision(decision); }
     rc::MissReason missReason() const { return rc::MissReason(reason); }
     rc::Vec3 rayOrigin() const { return {o[0], o[1], o[2]}; }
-    rc::Vec3 rayDirection() const { return {d[0], d[1], d[2]}; }
+    rc::Vec3 rayDirection() const;
 
     /// Copies what the GUI needs from `e`.
     static EventRecord from(const rc::TraceEvent& e, int region, int previous);

@@ -1,5 +1,7 @@
 #include "gui_options.h"
 
+#include <cmath>
+
 #include <QCommandLineParser>
 
 namespace rcgui {
@@ -19,6 +21,39 @@ bool parsePair(const QString& s, QChar sep, int& a, int& b) {
     return parts.size() == 2 && parseInt(parts[0], 0, 100000, a) && parseInt(parts[1], 0, 100000, b);
 }
 }  // namespace
+
+std::optional<CompareChoice> parseCompare(const QString& spec, QString& error) {
+    const QStringList parts = spec.trimmed().toLower().split(':');
+    const auto cache = rc::parseCacheKind(parts[0].toStdString());
+    const auto order = parts.size() == 2 ? rc::parseOrderKind(parts[1].toStdString()) : std::nullopt;
+    if (parts.size() != 2 || !cache || !order) {
+        error = "--compare must be CACHE:ORDER, with CACHE none, cylinder or blocker and ORDER scanline, "
+                "progressive or bfs (e.g. none:scanline), not '" + spec + "'";
+        return std::nullopt;
+    }
+    return CompareChoice{*cache, *order};
+}
+
+QString toString(const CompareChoice& c) {
+    return QString("%1:%2").arg(QString::fromUtf8(rc::toString(c.cache).data()),
+                                QString::fromUtf8(rc::toString(c.order).data()));
+}
+
+QString toString(SceneAngle a) {
+    switch (a) {
+        case SceneAngle::Side: return "side";
+        case SceneAngle::Along: return "along";
+        case SceneAngle::Top: return "top";
+        case SceneAngle::Front: return "front";
+    }
+    return "side";
+}
+
+std::optional<SceneAngle> parseSceneAngle(const QString& s) {
+    for (SceneAngle a : {SceneAngle::Side, SceneAngle::Along, SceneAngle::Top, SceneAngle::Front})
+        if (s.trimmed().toLower() == toString(a)) return a;
+    return std::nullopt;
+}
 
 ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message) {
     QCommandLineParser p;
@@ -43,9 +78,18 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
     const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
     const QCommandLineOption large("large-fonts", "bigger text, for a projector");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large})
+    const QCommandLineOption present("present", "presentation mode: the panels hidden, large fonts (F11 in the window)");
+    const QCommandLineOption compare("compare", "run a second render (another cache and order) in lockstep beside the first, e.g. none:scanline", "cache:order");
+    const QCommandLineOption sceneView("scene-view", "show the 3D scene beside the image: side (across the ray in focus, the paper's Figure 2), along (down the ray, Figure 1), top or front", "angle");
+    const QCommandLineOption orbit("orbit", "--scene-view: turn the view by YAW and PITCH degrees", "yaw,pitch");
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large, present, compare, sceneView, orbit})
         p.addOption(o);
-    if (!p.parse(args)) {
+    // --scene-view may come alone (the side view): give it its default value
+    QStringList argv = args;
+    for (int i = 1; i < argv.size(); ++i)
+        if (argv[i] == "--scene-view" && (i + 1 == argv.size() || !parseSceneAngle(argv[i + 1])))
+            argv[i] = "--scene-view=side";
+    if (!p.parse(argv)) {
         message = p.errorText();
         return ParseResult::Error;
     }
@@ -129,6 +173,29 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (!ok || out.zoom < 0.1 || out.zoom > 200) { message = "--zoom must be a number in [0.1, 200]"; return ParseResult::Error; }
     }
     out.largeFonts = p.isSet(large);
+    out.present = p.isSet(present);
+    if (p.isSet(compare)) {
+        out.compare = parseCompare(p.value(compare), message);
+        if (!out.compare) return ParseResult::Error;
+    }
+    if (p.isSet(sceneView)) {
+        const auto a = parseSceneAngle(p.value(sceneView));
+        if (!a) { message = "--scene-view must be side, along, top or front, not '" + p.value(sceneView) + "'"; return ParseResult::Error; }
+        out.sceneView = true;
+        out.sceneAngle = *a;
+    }
+    if (p.isSet(orbit)) {
+        const QStringList parts = p.value(orbit).split(',');
+        bool ok1 = false, ok2 = false;
+        if (parts.size() == 2) {
+            out.orbitYaw = parts[0].toDouble(&ok1);
+            out.orbitPitch = parts[1].toDouble(&ok2);
+        }
+        if (!ok1 || !ok2 || std::abs(out.orbitYaw) > 360 || std::abs(out.orbitPitch) > 90) {
+            message = "--orbit must be YAW,PITCH in degrees (|yaw| <= 360, |pitch| <= 90), not '" + p.value(orbit) + "'";
+            return ParseResult::Error;
+        }
+    }
     return ParseResult::Ok;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 /// \file
 /// \brief The command line of raycache-gui.
+#include <optional>
+
 #include <QPoint>
 #include <QSize>
 #include <QString>
@@ -10,6 +12,27 @@
 #include "render/render_session.h"
 
 namespace rcgui {
+
+/// A second render to run beside the first: another cache and order, same scene and size.
+struct CompareChoice {
+    rc::CacheKind cache = rc::CacheKind::None;
+    rc::OrderKind order = rc::OrderKind::Scanline;
+    bool operator==(const CompareChoice&) const = default;
+};
+/// Parses "CACHE:ORDER" (e.g. none:scanline, cylinder:bfs); on an error, says why.
+std::optional<CompareChoice> parseCompare(const QString& spec, QString& error);
+/// "cache:order", as parseCompare() reads it.
+QString toString(const CompareChoice& c);
+
+/// How the scene view looks at the scene.
+enum class SceneAngle {
+    Side,   ///< across the ray in focus, its hull's axis level (the paper's Figure 2)
+    Along,  ///< down the ray in focus (the paper's Figure 1)
+    Top,    ///< from above (the camera's up)
+    Front,  ///< from the eye's side, without perspective
+};
+QString toString(SceneAngle a);
+std::optional<SceneAngle> parseSceneAngle(const QString& s);
 
 /// What the command line asks for.
 struct GuiOptions {
@@ -29,6 +52,11 @@ struct GuiOptions {
     rc::AccelKind accel = rc::AccelKind::Linear;
     double zoom = 1.0;           ///< screenshots: zoom relative to "fit", about the ray being traced
     bool largeFonts = false;
+    bool present = false;        ///< presentation mode: panels hidden, large fonts
+    std::optional<CompareChoice> compare;  ///< --compare CACHE:ORDER: a second render in lockstep
+    bool sceneView = false;                ///< --scene-view: show the scene from the side
+    SceneAngle sceneAngle = SceneAngle::Side;
+    double orbitYaw = 0.0, orbitPitch = 0.0;  ///< --orbit: degrees turned from that angle
     bool sceneGiven = false;
     /// No arguments at all: open on a partly traced image with a hit ray in focus, its
     /// hull, blockers and the frontier shown (the paper at a glance).

@@ -8,7 +8,16 @@
 
 namespace rcgui {
 
-QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path) {
+double HeatmapBuilder::scaleOf(const SessionState& s, Heatmap mode) {
+    if (mode == Heatmap::VisitOrder) return std::max<double>(1.0, double(s.session().steps()));
+    if (mode != Heatmap::Tests) return 0.0;
+    std::int32_t most = 1;
+    const int n = s.width() * s.height();
+    for (int px = 0; px < n; ++px) most = std::max(most, s.recorder().testsAt(px));
+    return double(most);
+}
+
+QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path, double top) {
     if (mode == Heatmap::None) return SessionController::imageOf(s);
     const TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height(), n = w * h;
@@ -19,11 +28,11 @@ QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path) {
         case Heatmap::None: break;
         case Heatmap::Tests: {
             // Logarithmic: a pixel's tests span 1 to thousands
-            std::int32_t most = 1;
-            for (int px = 0; px < n; ++px) most = std::max(most, rec.testsAt(px));
-            const double top = std::log1p(double(most));
+            const double most = top > 0.0 ? top : scaleOf(s, mode);
+            const double logTop = std::log1p(most);
             for (int px = 0; px < n; ++px)
-                if (rec.firstVisit(px) >= 0) set(px, palette::ramp(std::log1p(double(rec.testsAt(px))) / top));
+                if (rec.firstVisit(px) >= 0)
+                    set(px, palette::ramp(std::min(1.0, std::log1p(double(rec.testsAt(px))) / logTop)));
             break;
         }
         case Heatmap::HitMiss: {
@@ -40,9 +49,9 @@ QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path) {
             break;
         }
         case Heatmap::VisitOrder: {
-            const double last = std::max<double>(1.0, double(s.session().steps()));
+            const double last = top > 0.0 ? top : scaleOf(s, mode);
             for (int px = 0; px < n; ++px)
-                if (rec.firstVisit(px) >= 0) set(px, palette::ramp(double(rec.firstVisit(px)) / last));
+                if (rec.firstVisit(px) >= 0) set(px, palette::ramp(std::min(1.0, double(rec.firstVisit(px)) / last)));
             break;
         }
         case Heatmap::BeamNode: {

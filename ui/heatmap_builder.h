@@ -13,7 +13,13 @@ class HeatmapBuilder {
 public:
     /// The picture of `mode` (Heatmap::None gives the rendered image). `path` is the
     /// ray-tree path of the beam-tree heatmap.
-    static QImage build(const SessionState& s, Heatmap mode, int path = 0);
+    /// `top` fixes the value that maps to the top of the colour ramp (tests per pixel, or
+    /// steps for the visiting order); 0 takes the state's own largest value. Two renders
+    /// compared side by side share one `top`, so equal colours mean equal values.
+    static QImage build(const SessionState& s, Heatmap mode, int path = 0, double top = 0.0);
+    /// The state's own top of the scale for `mode`: its most tests in one pixel, or its
+    /// step count (at least 1); 0 for pictures without a scale.
+    static double scaleOf(const SessionState& s, Heatmap mode);
 };
 
 }  // namespace rcgui

@@ -38,6 +38,7 @@ void ImageView::fit() {
     zoom_ = std::min(double(width()) / image_.width(), double(height()) / image_.height());
     pan_ = QPointF((width() - zoom_ * image_.width()) / 2, (height() - zoom_ * image_.height()) / 2);
     update();
+    emit viewMoved();
 }
 
 void ImageView::zoomAt(double factor, const QPointF& anchor) {
@@ -46,6 +47,7 @@ void ImageView::zoomAt(double factor, const QPointF& anchor) {
     pan_ = anchor - zoom_ * under;
     fitted_ = false;
     update();
+    emit viewMoved();
 }
 
 void ImageView::setZoom(double zoom, const QPointF& pan) {
@@ -53,6 +55,7 @@ void ImageView::setZoom(double zoom, const QPointF& pan) {
     pan_ = pan;
     fitted_ = false;
     update();
+    emit viewMoved();
 }
 
 std::optional<QPoint> ImageView::pixelAt(const QPointF& widgetPoint) const {
@@ -109,6 +112,7 @@ void ImageView::mouseMoveEvent(QMouseEvent* e) {
         pan_ += e->position() - lastPos_;
         fitted_ = false;
         update();
+        emit viewMoved();
     }
     lastPos_ = e->position();
 }

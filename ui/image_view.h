@@ -52,6 +52,8 @@ public:
 signals:
     void pixelClicked(int x, int y);
     void cleared();
+    /// The zoom or pan changed (by the user, fit() or setZoom()).
+    void viewMoved();
 
 protected:
     void paintEvent(QPaintEvent*) override;

@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QSlider>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -27,6 +28,7 @@
 #include "labels.h"
 #include "objects_panel.h"
 #include "ray_tree_panel.h"
+#include "scene_view.h"
 #include "scene/builtin_scenes.h"
 #include "stats_panel.h"
 
@@ -51,7 +53,50 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         QMessageBox::critical(this, title, message);
     };
     view_ = new ImageView(this);
-    setCentralWidget(view_);
+    compareView_ = new ImageView(this);
+    sceneView_ = new SceneView(this);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->setObjectName("central");
+    split->addWidget(view_);
+    split->addWidget(compareView_);
+    split->addWidget(sceneView_);
+    split->setChildrenCollapsible(false);
+    compareView_->hide();
+    sceneView_->hide();
+    setCentralWidget(split);
+    // The compared render: the same overlays, the selection carried over by pixel and path
+    compareView_->setOverlayHook([this](QPainter& p, double scale) {
+        if (const SessionState* c = compare_.state(); c && compareChoice_)
+            comparePainter_.paint(p, *c, overlays_, compareSelection(), scale);
+    });
+    compareView_->setLegendHook([this](QPainter& p, const QRectF& area) {
+        if (const SessionState* c = compare_.state(); c && compareChoice_) {
+            const QRectF image(compareView_->imageToWidget(QPointF(0, 0)),
+                               compareView_->imageToWidget(QPointF(compareView_->image().width(), compareView_->image().height())));
+            comparePainter_.paintLegend(p, *c, overlays_, compareSelection(), area, image);
+        }
+    });
+    compareView_->setTooltipHook([this](int x, int y) { return pixelTooltip(compare_.state(), x, y); });
+    connect(compareView_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
+    connect(compareView_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
+    comparePainter_.setKeysShown(false);
+    // The two views zoom and pan together: the same pixels side by side
+    auto follow = [this](ImageView* from, ImageView* to) {
+        connect(from, &ImageView::viewMoved, this, [this, from, to] {
+            if (!compareChoice_ || followingView_ || to->isHidden() || from->image().size() != to->image().size()) return;
+            followingView_ = true;
+            // The same image point at the same place relative to each view's centre
+            const QPointF shift = QPointF(to->width() - from->width(), to->height() - from->height()) / 2.0;
+            to->setZoom(from->zoom(), from->pan() + shift);
+            followingView_ = false;
+        });
+    };
+    follow(view_, compareView_);
+    follow(compareView_, view_);
+    connect(&compare_, &SessionController::changed, this, &MainWindow::refreshCompare);
+    connect(&compare_, &SessionController::snapshot, this, [this](const QImage& img, qint64, double) {
+        if (heatmap_ == Heatmap::None) compareView_->setImage(img);
+    });
     view_->setOverlayHook([this](QPainter& p, double scale) {
         if (const SessionState* s = controller_.state()) overlayPainter_.paint(p, *s, overlays_, selection_, scale);
     });
@@ -62,19 +107,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, image);
         }
     });
-    view_->setTooltipHook([this](int x, int y) -> QString {
-        const SessionState* s = controller_.state();
-        if (!s || x < 0 || y < 0 || x >= s->width() || y >= s->height()) return {};
-        const TraceRecorder& rec = s->recorder();
-        const int px = y * s->width() + x;
-        if (rec.firstVisit(px) < 0) return QString("pixel (%1,%2): not traced yet").arg(x).arg(y);
-        QString t = QString("pixel (%1,%2): %3 tests, %4 hits, %5 misses, first ray at step %6")
-                        .arg(x).arg(y).arg(rec.testsAt(px)).arg(rec.hitsAt(px)).arg(rec.missesAt(px))
-                        .arg(rec.firstVisit(px));
-        if (rec.missReasonAt(px) != rc::MissReason::None)
-            t += QString(", first miss: %1").arg(QString::fromUtf8(rc::toString(rec.missReasonAt(px)).data()));
-        return t;
-    });
+    view_->setTooltipHook([this](int x, int y) { return pixelTooltip(controller_.state(), x, y); });
     connect(view_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
     connect(view_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
 
@@ -101,7 +134,176 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
     controller_.cancel();
+    compare_.cancel();
     controller_.wait();
+    compare_.wait();
+}
+
+QString pixelTooltip(const SessionState* s, int x, int y) {
+    if (!s || x < 0 || y < 0 || x >= s->width() || y >= s->height()) return {};
+    const TraceRecorder& rec = s->recorder();
+    const int px = y * s->width() + x;
+    if (rec.firstVisit(px) < 0) return QString("pixel (%1,%2): not traced yet").arg(x).arg(y);
+    QString t = QString("pixel (%1,%2): %3 tests, %4 hits, %5 misses, first ray at step %6")
+                    .arg(x).arg(y).arg(rec.testsAt(px)).arg(rec.hitsAt(px)).arg(rec.missesAt(px))
+                    .arg(rec.firstVisit(px));
+    if (rec.missReasonAt(px) != rc::MissReason::None)
+        t += QString(", first miss: %1").arg(QString::fromUtf8(rc::toString(rec.missReasonAt(px)).data()));
+    return t;
+}
+
+Selection MainWindow::compareSelection() const {
+    // The same pixel; the chosen ray carried over by its pixel and path
+    Selection sel = selection_;
+    sel.event = -1;
+    const SessionState* s = controller_.state();
+    const SessionState* c = compare_.state();
+    if (!c || sel.pixel >= c->width() * c->height()) return {};
+    if (s && selection_.event >= 0 && std::size_t(selection_.event) < s->recorder().events().size()) {
+        const EventRecord& r = s->recorder().events()[std::size_t(selection_.event)];
+        sel.event = c->recorder().eventAt(r.pixel, r.node);
+        if (sel.event < 0) sel.pixel = r.pixel;
+    }
+    return sel;
+}
+
+double MainWindow::heatmapTop() const {
+    // Two renders side by side share one scale: the larger of their own
+    if (!compareChoice_ || (heatmap_ != Heatmap::Tests && heatmap_ != Heatmap::VisitOrder)) return 0.0;
+    const SessionState* s = controller_.state();
+    const SessionState* c = compare_.state();
+    if (!s || !c) return 0.0;
+    return std::max(HeatmapBuilder::scaleOf(*s, heatmap_), HeatmapBuilder::scaleOf(*c, heatmap_));
+}
+
+rc::RenderOptions MainWindow::effectiveOptions() const {
+    rc::RenderOptions o = options_;
+    if (sizeChoice_ >= 0 && scene_) {
+        o.width = o.height = 0;
+        if (sizeChoice_ > 0) {
+            const int w = scene_->camera.width, h = scene_->camera.height;
+            const double longer = std::max(w, h);
+            o.width = std::max(1, int(std::lround(sizeChoice_ * w / longer)));
+            o.height = std::max(1, int(std::lround(sizeChoice_ * h / longer)));
+        }
+    }
+    return o;
+}
+
+bool MainWindow::setCompare(const QString& spec, QString& error) {
+    auto showChoice = [this] {
+        const QSignalBlocker b(compareBox_);
+        const int i = compareChoice_ ? compareBox_->findData(toString(*compareChoice_)) : 0;
+        compareBox_->setCurrentIndex(std::max(0, i));
+    };
+    const QString t = spec.trimmed().toLower();
+    if (t.isEmpty() || t == "off") {
+        compareChoice_.reset();
+        compare_.clear();
+        compareView_->hide();
+        comparePainter_.setExtraCaption({});
+        showChoice();
+        refresh();
+        return true;
+    }
+    const auto choice = parseCompare(spec, error);
+    if (!choice) {
+        showChoice();  // keeps what was there
+        return false;
+    }
+    compareChoice_ = choice;
+    compareView_->show();
+    showChoice();
+    startCompare();
+    return true;
+}
+
+void MainWindow::startCompare() {
+    if (!compareChoice_ || !scene_) return;
+    rc::RenderOptions o = effectiveOptions();
+    o.cache = compareChoice_->cache;
+    o.order = compareChoice_->order;
+    try {
+        compare_.reset({scene_, o});
+    } catch (const std::exception& e) {
+        reportError_("Cannot start the compared render", QString::fromUtf8(e.what()));
+    }
+    QSplitter* split = qobject_cast<QSplitter*>(centralWidget());
+    if (split) split->setSizes({1000, 1000, sceneView_->isHidden() ? 0 : 1000});
+    compareView_->fit();
+}
+
+// [compare-sync]
+void MainWindow::syncCompare(bool now) {
+    if (!compareChoice_) return;
+    const SessionState* s = controller_.state();
+    if (!s) return;  // the first render is running: catch up when it hands its state back
+    if (now && compare_.busy()) compare_.wait();
+    SessionState* c = compare_.state();
+    if (!c) return;  // the compared render is catching up on its worker
+    const std::int64_t want = s->session().steps(), have = c->session().steps();
+    if (want == have) {
+        // Every render has the same rays: when the first is done, so is the second
+        if (s->session().done() && !c->session().done()) c->step();
+        return;
+    }
+    // A short way forwards (a step, a play tick) on this thread; else on the worker,
+    // rebuilding and replaying when it lies behind
+    constexpr std::int64_t kOnThisThread = 2000;
+    if (want > have && (now || want - have <= kOnThisThread)) {
+        c->runUntil(RunGoal::ToStep, want);
+        return;
+    }
+    compare_.goToStep(want);
+    if (now) compare_.wait();
+}
+// [compare-sync]
+
+void MainWindow::refreshCompare() {
+    if (!compareChoice_) return;
+    syncCompare();
+    const SessionState* c = compare_.state();
+    const SessionState* s = controller_.state();
+    if (!c) return;
+    const double top = heatmapTop();
+    int path = 0;
+    if (const auto& e = c->recorder().lastCommitted()) path = e->task.node;
+    compareView_->setImage(HeatmapBuilder::build(*c, heatmap_, path, top));
+    comparePainter_.setHeatmap(heatmap_, top);
+    overlayPainter_.setHeatmap(heatmap_, top);
+    QStringList extra;
+    if (s) {
+        const double a = double(s->session().counters().intersectionTests);
+        const double b = double(c->session().counters().intersectionTests);
+        extra << QString("tests %1 = %2x the left's %3").arg(b, 0, 'f', 0).arg(a > 0 ? b / a : 0.0, 0, 'f', 2).arg(a, 0, 'f', 0)
+              << QString("difference %1%2 tests").arg(b >= a ? "+" : "").arg(b - a, 0, 'f', 0);
+        if (s->session().steps() != c->session().steps())
+            extra << QString("catching up: step %1 of %2").arg(c->session().steps()).arg(s->session().steps());
+        stats_->refresh(s, c);
+    }
+    comparePainter_.setExtraCaption(extra);
+    compareView_->update();
+    view_->update();
+}
+
+void MainWindow::setSceneView(bool on) {
+    sceneView_->setVisible(on);
+    if (sceneViewAct_ && sceneViewAct_->isChecked() != on) {
+        const QSignalBlocker b(sceneViewAct_);
+        sceneViewAct_->setChecked(on);
+    }
+    if (QSplitter* split = qobject_cast<QSplitter*>(centralWidget()))
+        split->setSizes({1000, compareView_->isHidden() ? 0 : 1000, on ? 1000 : 0});
+    viewsChanged();
+}
+
+void MainWindow::viewsChanged() {
+    view_->update();
+    if (compareChoice_) compareView_->update();
+    if (!sceneView_->isHidden()) {
+        sceneView_->setLayers(overlays_.cylinder, overlays_.hull);
+        if (const SessionState* s = controller_.state()) sceneView_->setSketch(SceneSketch::of(*s, selection_));
+    }
 }
 
 void MainWindow::buildToolbars() {
@@ -123,7 +325,10 @@ void MainWindow::buildToolbars() {
         }
     }
     const QDir scenes(scenesFolder());
-    for (const QFileInfo& f : scenes.entryInfoList({"*.nff"}, QDir::Files, QDir::Name)) {
+    // By suffix, not a "*.nff" name filter: that compiles a regular expression, whose
+    // machine code (PCRE2's JIT) valgrind cannot follow
+    for (const QFileInfo& f : scenes.entryInfoList(QDir::Files, QDir::Name)) {
+        if (f.suffix().toLower() != "nff") continue;
         sceneBox_->addItem(f.fileName(), f.absoluteFilePath());
         sceneBox_->setItemData(sceneBox_->count() - 1, f.absoluteFilePath(), Qt::ToolTipRole);
     }
@@ -167,6 +372,18 @@ void MainWindow::buildToolbars() {
     connect(sizeBox_, &QComboBox::activated, this, [this](int i) {
         sizeChoice_ = sizeBox_->itemData(i).toInt();
         resetSession();
+    });
+    compareBox_ = new QComboBox(this);
+    compareBox_->addItem("off", "off");
+    for (auto c : {rc::CacheKind::None, rc::CacheKind::Cylinder, rc::CacheKind::Blocker})
+        for (auto o : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
+            compareBox_->addItem(toString(CompareChoice{c, o}), toString(CompareChoice{c, o}));
+    compareBox_->setToolTip("Compare: run a second render with another cache and order beside this one, in lockstep");
+    render->addWidget(new QLabel(" Compare ", this));
+    render->addWidget(compareBox_);
+    connect(compareBox_, &QComboBox::activated, this, [this](int i) {
+        QString why;
+        if (!setCompare(compareBox_->itemData(i).toString(), why)) reportError_("Cannot compare", why);
     });
     resetAct_ = render->addAction("Reset", this, &MainWindow::resetSession);
 
@@ -225,7 +442,8 @@ void MainWindow::buildToolbars() {
         connect(c, &QCheckBox::toggled, this, [this, field](bool on) {
             overlays_.*field = on;
             view_->setGridEnabled(overlays_.grid);
-            view_->update();
+            compareView_->setGridEnabled(overlays_.grid);
+            viewsChanged();
         });
         show->addWidget(c);
         return c;
@@ -260,6 +478,10 @@ void MainWindow::buildToolbars() {
     presentAct_->setToolTip("Presentation mode: hide the panels, large fonts (F11)");
     connect(presentAct_, &QAction::toggled, this, &MainWindow::setPresentation);
     largeAct_ = large;
+    sceneViewAct_ = show->addAction("Scene view");
+    sceneViewAct_->setCheckable(true);
+    sceneViewAct_->setToolTip("Show the 3D scene from the side: objects, lights, the ray tree in focus, its cylinder and hull");
+    connect(sceneViewAct_, &QAction::toggled, this, &MainWindow::setSceneView);
     QAction* fit = show->addAction("Fit", view_, &ImageView::fit);
     fit->setToolTip("Fit the image to the window (F)");
 }
@@ -417,21 +639,14 @@ void MainWindow::resetSession() {
     setPlaying(false);
     // The image size may change: pixels selected in the old render mean nothing now
     selection_.pixel = selection_.event = -1;
-    rc::RenderOptions o = options_;
-    if (sizeChoice_ >= 0) {
-        o.width = o.height = 0;
-        if (sizeChoice_ > 0) {
-            const int w = scene_->camera.width, h = scene_->camera.height;
-            const double longer = std::max(w, h);
-            o.width = std::max(1, int(std::lround(sizeChoice_ * w / longer)));
-            o.height = std::max(1, int(std::lround(sizeChoice_ * h / longer)));
-        }
-    }
+    const rc::RenderOptions o = effectiveOptions();
+    if (compareChoice_) compare_.clear();  // rebuilt with the new choices below
     try {
         controller_.reset({scene_, o});
     } catch (const std::exception& e) {
         reportError_("Cannot start the render", QString::fromUtf8(e.what()));
     }
+    startCompare();
     updateControls();
 }
 
@@ -447,12 +662,12 @@ void MainWindow::setOverlays(const Overlays& o) {
     missesBox_->setChecked(o.misses);
     gridBox_->setChecked(o.grid);
     view_->setGridEnabled(o.grid);
-    view_->update();
+    viewsChanged();
 }
 
 void MainWindow::setHeatmap(Heatmap h) {
     heatmap_ = h;
-    overlayPainter_.setHeatmap(h);
+    overlayPainter_.setHeatmap(h, heatmapTop());
     heatmapBox_->setCurrentIndex(heatmapBox_->findData(int(h)));
     refresh();
 }
@@ -491,7 +706,7 @@ void MainWindow::selectPixel(int x, int y) {
     }
     selection_.event = -1;
     rayTree_->showPixel(s, selection_.pixel);
-    view_->update();
+    viewsChanged();
 }
 
 bool MainWindow::selectEvent(int event) {
@@ -501,13 +716,13 @@ bool MainWindow::selectEvent(int event) {
     if (pixel != selection_.pixel) selectPixel(pixel % s->width(), pixel / s->width());
     selection_.event = event;
     rayTree_->setCurrentEvent(event);
-    view_->update();
+    viewsChanged();
     return true;
 }
 
 void MainWindow::selectObject(int object) {
     selection_.object = object;
-    view_->update();
+    viewsChanged();
 }
 
 void MainWindow::stepRay() { controller_.stepRay(); }
@@ -565,8 +780,10 @@ int MainWindow::beamPath() const {
 void MainWindow::refresh() {
     const SessionState* s = controller_.state();
     if (!s) return;
-    view_->setImage(HeatmapBuilder::build(*s, heatmap_, beamPath()));
-    stats_->refresh(s);
+    const double top = heatmapTop();
+    overlayPainter_.setHeatmap(heatmap_, top);
+    view_->setImage(HeatmapBuilder::build(*s, heatmap_, beamPath(), top));
+    stats_->refresh(s, compareChoice_ ? compare_.state() : nullptr);
     cacheTree_->refresh(s);
     eventLog_->refresh(s);
     // The ray tree follows the selected pixel, else the pixel being traced
@@ -576,6 +793,8 @@ void MainWindow::refresh() {
     if (const auto f = RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
     statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
     updateControls();
+    if (compareChoice_) refreshCompare();
+    viewsChanged();
 }
 
 void MainWindow::onBusyChanged(bool busy) {
@@ -597,7 +816,7 @@ void MainWindow::updateControls() {
     if (playAct_) playAct_->setEnabled(canStep || playTimer_.isActive());
     if (backAct_) backAct_->setEnabled(!busy && s && s->session().steps() > 0);
     if (cancelAct_) cancelAct_->setEnabled(busy);
-    for (QWidget* w : std::initializer_list<QWidget*>{sceneBox_, cacheBox_, orderBox_, accelBox_, sizeBox_}) if (w) w->setEnabled(!busy);
+    for (QWidget* w : std::initializer_list<QWidget*>{sceneBox_, cacheBox_, orderBox_, accelBox_, sizeBox_, compareBox_}) if (w) w->setEnabled(!busy);
     if (resetAct_) resetAct_->setEnabled(true);
     if (openAct_) openAct_->setEnabled(!busy);
     // Hide the overlays this cache and order cannot draw: no cache has no cylinder, hull or
@@ -628,7 +847,9 @@ QStringList MainWindow::offeredOverlays() const {
 void MainWindow::closeEvent(QCloseEvent* e) {
     setPlaying(false);
     controller_.cancel();
+    compare_.cancel();
     controller_.wait();
+    compare_.wait();
     e->accept();
 }
 

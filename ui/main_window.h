@@ -4,10 +4,12 @@
 /// the dock panels, around one SessionController.
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include <QMainWindow>
 #include <QTimer>
 
+#include "gui_options.h"
 #include "overlay_options.h"
 #include "overlay_painter.h"
 #include "session_controller.h"
@@ -24,11 +26,16 @@ namespace rcgui {
 /// scenes/ as configured at build time.
 QString scenesFolder();
 
+class SessionState;
+/// The hover text of pixel (x, y) of a render (empty outside it or without one).
+QString pixelTooltip(const SessionState* s, int x, int y);
+
 class CacheTreePanel;
 class EventLogPanel;
 class ImageView;
 class ObjectsPanel;
 class RayTreePanel;
+class SceneView;
 class StatsPanel;
 
 /// The RayCache window. Every action is also a public slot, so tests and the
@@ -69,6 +76,23 @@ public:
     void setLargeFonts(bool on);
     /// Presentation mode: the panels and the render toolbar hidden, large fonts.
     void setPresentation(bool on);
+    /// Runs a second render with another cache and order beside the first, in lockstep:
+    /// the same step count, overlays, selection and heatmap scale. On a bad spec, says
+    /// why in `error`, keeps everything as it was and returns false. "off" or "" ends it.
+    bool setCompare(const QString& spec, QString& error);
+    /// The compared render's controller (its state is null when there is none).
+    SessionController& compareController() { return compare_; }
+    const std::optional<CompareChoice>& compareChoice() const { return compareChoice_; }
+    ImageView* compareView() const { return compareView_; }
+    const OverlayPainter& compareOverlayPainter() const { return comparePainter_; }
+    /// Brings the compared render to the first one's step count (on the calling thread
+    /// when the gap is small or `now`, else on its worker).
+    void syncCompare(bool now = false);
+    /// Shows or hides the view of the 3D scene.
+    void setSceneView(bool on);
+    SceneView* sceneView() const { return sceneView_; }
+    /// The statistics panel.
+    StatsPanel* statsPanel() const { return stats_; }
     /// Selects a pixel to inspect (-1, -1 clears).
     void selectPixel(int x, int y);
     /// Puts a ray worth showing in focus: the newest eye ray that hit an object whose
@@ -112,8 +136,25 @@ private:
     void onPlayTick();
     void updateControls();
     int beamPath() const;
+    void refreshCompare();
+    /// The selection as it applies to the compared render.
+    Selection compareSelection() const;
+    /// The image size and choices a new render gets.
+    rc::RenderOptions effectiveOptions() const;
+    /// Repaints the views and rebuilds the scene view's sketch (after a selection change).
+    void viewsChanged();
+    double heatmapTop() const;
+    void startCompare();
 
     SessionController controller_;
+    SessionController compare_;
+    std::optional<CompareChoice> compareChoice_;
+    OverlayPainter comparePainter_;
+    ImageView* compareView_ = nullptr;
+    SceneView* sceneView_ = nullptr;
+    bool followingView_ = false;  ///< one view is copying the other's zoom and pan
+    QComboBox* compareBox_ = nullptr;
+    QAction* sceneViewAct_ = nullptr;
     std::shared_ptr<const rc::Scene> scene_;
     rc::RenderOptions options_;
     int sizeChoice_ = 0;  ///< 0: the scene's size, else the longer side

@@ -7,6 +7,7 @@
 #include <QLinearGradient>
 #include <QPainterPath>
 
+#include "heatmap_builder.h"
 #include "palette.h"
 #include "projector.h"
 
@@ -116,16 +117,9 @@ void OverlayPainter::paintFocus(QPainter& p, const SessionState& s, const Projec
 void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Projector& proj,
                                    const RayFocus& f) {
     // The active entry's cylinder when it has one, else the cylinder around this ray's segment
-    rc::SafetyCylinder cyl;
-    bool cached = false;
-    if (f.current) {
-        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
-        if (e.state == rc::CacheEntry::State::Loaded && e.cylinder.radius >= 0.0) {
-            cyl = e.cylinder;
-            cached = true;
-        }
-    }
-    if (!cached) cyl = cylinderAround(s.scene(), f);
+    const FocusCylinder fc = cylinderOf(s, f);
+    const rc::SafetyCylinder& cyl = fc.cylinder;
+    const bool cached = fc.cached;
     if (!(cyl.radius > 0.0)) return;
     const QPolygonF shape = proj.hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius});
     outline(p, shape, palette::kCylinder, (cached ? 2.5 : 2.0) * lineScale_, cached ? Qt::SolidLine : Qt::DashLine,
@@ -135,34 +129,13 @@ void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Pro
 }
 
 void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
-    const rc::BlockerLists* lists = s.session().strategy().blockerLists();
-    if (!lists) return;
-    int origin = -1, target = -1;
-    rc::Vec3 coneAxis = f.ray.d;
-    double coneAngle = -1.0;
-    if (f.current) {
-        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
-        if (e.state == rc::CacheEntry::State::Loaded) {
-            origin = e.blockerOrigin;
-            target = e.blockerTarget;
-            if (e.object < 0 && e.coneAngle >= 0.0) {
-                coneAxis = e.coneAxis;
-                coneAngle = e.coneAngle;
-            }
-        }
-    } else {
-        origin = f.origin.object >= 0 ? lists->pointSite(f.origin.object, f.ray.o) : lists->eyeSite();
-        target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light)
-                 : f.hit >= 0                  ? lists->pointSite(f.hit, f.ray.at(f.t))
-                                               : -1;
-        coneAngle = emptyConeAround(s.scene(), f);
-    }
+    const FocusHull h = hullOf(s, f);
     // An eye ray that hit nothing: the cone of eye rays known to hit nothing either
-    if (coneAngle >= 0.0) {
-        const QPolygonF cone = proj.eyeCone(coneAxis, coneAngle);
+    if (h.coneAngle >= 0.0) {
+        const QPolygonF cone = proj.eyeCone(h.coneAxis, h.coneAngle);
         outline(p, cone, palette::kHull, 2.5 * lineScale_, Qt::DashLine, withAlpha(palette::kHull, 30), &work_,
                 proj.covers(cone));
-        if (auto c = proj.point(proj.eye() + coneAxis)) {
+        if (auto c = proj.point(proj.eye() + h.coneAxis)) {
             p.setPen(cosmetic(palette::kHull, 2.0));
             const double r = 4.0 / std::sqrt(std::abs(p.transform().determinant()));
             p.drawLine(*c - QPointF(r, r), *c + QPointF(r, r));
@@ -170,22 +143,18 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
         }
     }
     // No target (a ray that hit nothing) or no entry yet: there is no hull to draw
+    if (!h.valid()) return;
     const rc::Scene& scene = s.scene();
-    if (origin < 0 || target < 0 || origin >= lists->sites() || target >= lists->sites()) return;
-    const rc::Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
-    const QPolygonF shape = proj.hull(a, b);
+    const QPolygonF shape = proj.hull(h.a, h.b);
     outline(p, shape, palette::kHull, 2.5 * lineScale_, Qt::SolidLine, withAlpha(palette::kHull, 45), &work_,
             proj.covers(shape));
-    const QPolygonF from = proj.silhouette(a);
+    const QPolygonF from = proj.silhouette(h.a);
     outline(p, from, palette::kOrigin, 1.5 * lineScale_, Qt::DashLine, Qt::transparent, &work_, proj.covers(from));
-    if (const std::vector<int>* blockers = lists->find(origin, target))
-        for (int id : *blockers)
-            if (id >= 0 && id < scene.size())
-                paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 80), 3.0);
-    if (target < scene.size()) {
-        paintObject(p, s, proj, target, palette::kTarget, withAlpha(palette::kTarget, 40), 3.0);
-    } else if (auto c = proj.point(b.c)) {
-        // A light: a small star
+    for (int id : h.blockers) paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 80), 3.0);
+    if (h.target < scene.size()) {
+        paintObject(p, s, proj, h.target, palette::kTarget, withAlpha(palette::kTarget, 40), 3.0);
+    } else if (auto c = proj.point(h.b.c)) {
+        // A light (or a tile of a large polygon): a small star
         p.setPen(cosmetic(palette::kTarget, 3.0));
         const double r = 8.0 / std::sqrt(std::abs(p.transform().determinant()));
         for (int k = 0; k < 4; ++k) {
@@ -332,9 +301,10 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                                 QString("miss: %1 (%2)").arg(QString::fromUtf8(rc::toString(rc::MissReason(r)).data()))
                                     .arg(n.missReasons[r])});
     }
+    caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
 
-    if (!o.legend) keys.clear();
+    if (!o.legend || !keysShown_) keys.clear();
     // A key that would cover much of the image gets a smaller font (untick Legend to hide it)
     const double rows = double(keys.size() + caption.size()) + 4;
     const double room = std::max(image.left() - area.left(), area.right() - image.right());
@@ -343,6 +313,16 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
         const double f = std::max(0.6, 0.55 * area.height() / (rows * (QFontMetricsF(small).height() + 2)));
         small.setPointSizeF(small.pointSizeF() * f);
         p.setFont(small);
+    }
+    {
+        // A caption wider than the view takes a smaller font rather than be cut off
+        double widest = 0;
+        for (const QString& c : caption) widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(c));
+        if (widest + 32 > area.width() && widest > 0) {
+            QFont small = p.font();
+            small.setPointSizeF(small.pointSizeF() * std::max(0.6, (area.width() - 32) / widest));
+            p.setFont(small);
+        }
     }
     const QFontMetricsF fm(p.font());
     const double lh = fm.height() + 2;
@@ -353,16 +333,14 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     for (const auto& k : keys) kw = std::max(kw, fm.horizontalAdvance(k.second) + lh * 1.3);
     // A heatmap's colour bar, with values
     const bool bar = o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder);
+    QString barTitle = heatmap_ == Heatmap::Tests ? "tests per pixel (log scale)" : "step of a pixel's first ray";
+    if (heatTop_ > 0.0) barTitle += ", one scale for both";
     double top = 0;
+    lastTop_ = 0;
     if (bar) {
-        const TraceRecorder& rec = s.recorder();
-        if (heatmap_ == Heatmap::Tests) {
-            for (int px = 0; px < s.width() * s.height(); ++px) top = std::max(top, double(rec.testsAt(px)));
-            top = std::max(top, 1.0);
-        } else {
-            top = std::max(1.0, double(s.session().steps()));
-        }
-        kw = std::max(kw, std::max(220.0, fm.horizontalAdvance(heatmap_ == Heatmap::Tests ? "tests per pixel (log scale)" : "step of a pixel's first ray") + 16));
+        top = heatTop_ > 0.0 ? heatTop_ : HeatmapBuilder::scaleOf(s, heatmap_);
+        lastTop_ = top;
+        kw = std::max(kw, std::max(220.0, fm.horizontalAdvance(barTitle) + 16));
     }
     const double barHeight = bar ? lh * 3.2 : 0.0;
     const double keyHeight = lh * double(keys.size()) + 8 + barHeight;
@@ -407,8 +385,7 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     }
     if (!bar) return;
     p.setPen(Qt::white);
-    p.drawText(QRectF(keyBox.left() + 8, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft,
-               heatmap_ == Heatmap::Tests ? "tests per pixel (log scale)" : "step of a pixel's first ray");
+    p.drawText(QRectF(keyBox.left() + 8, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft, barTitle);
     y += lh;
     const QRectF strip(keyBox.left() + 8, y + 2, kw - 16, lh * 0.8);
     QLinearGradient g(strip.topLeft(), strip.topRight());

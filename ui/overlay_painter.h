@@ -4,6 +4,7 @@
 /// miss markers, selection) over the image, and their legend.
 #include <QImage>
 #include <QPainter>
+#include <QStringList>
 
 #include "overlay_options.h"
 #include "ray_focus.h"
@@ -34,8 +35,18 @@ public:
     /// has room, else over it.
     void paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
                      const QRectF& area, const QRectF& image);
-    /// The heatmap shown, for its colour bar in the key.
-    void setHeatmap(Heatmap h) { heatmap_ = h; }
+    /// The heatmap shown, for its colour bar in the key, and the top of its scale (0: the
+    /// state's own; see HeatmapBuilder::build).
+    void setHeatmap(Heatmap h, double top = 0.0) {
+        heatmap_ = h;
+        heatTop_ = top;
+    }
+    /// The top of the colour bar's scale last drawn (0: no bar).
+    double heatmapTop() const { return lastTop_; }
+    /// Lines added under the caption (a compared render: its difference in tests).
+    void setExtraCaption(const QStringList& lines) { extraCaption_ = lines; }
+    /// Whether the key lists the overlays' colours (the colour bar is always drawn).
+    void setKeysShown(bool on) { keysShown_ = on; }
     /// Where the last key was drawn (widget coordinates; empty: none).
     const QRectF& legendKey() const { return legendKey_; }
 
@@ -56,6 +67,9 @@ public:
 private:
     PaintWork work_;
     Heatmap heatmap_ = Heatmap::None;
+    double heatTop_ = 0.0, lastTop_ = 0.0;
+    QStringList extraCaption_;
+    bool keysShown_ = true;
     QRectF legendKey_;
     double lineScale_ = 1.0;
     std::uint64_t cachedState_ = 0;  ///< SessionState::serial() of the cached layer

@@ -59,7 +59,9 @@ std::optional<RayFocus> RayFocus::ofEvent(const SessionState& s, int index) {
     f.hit = r.hit;
     f.ray = {r.rayOrigin(), r.rayDirection()};
     f.t = r.t;
-    f.tmax = r.tmax;
+    // A shadow ray ends at its light
+    if (f.kind == rc::RayKind::Shadow && f.light >= 0 && std::size_t(f.light) < s.scene().lights.size())
+        f.tmax = glm::length(s.scene().lights[std::size_t(f.light)].position - f.ray.o);
     f.deferred = r.deferred();
     return f;
 }
@@ -102,6 +104,56 @@ double emptyConeAround(const rc::Scene& scene, const RayFocus& f) {
         angle = std::min(angle, between - std::asin(o.bound.r / dist));
     }
     return angle < rc::kNoHit ? angle : -1.0;
+}
+
+FocusHull hullOf(const SessionState& s, const RayFocus& f) {
+    FocusHull h;
+    const rc::BlockerLists* lists = s.session().strategy().blockerLists();
+    if (!lists) return h;
+    h.coneAxis = f.ray.d;
+    if (f.current) {
+        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        if (e.state == rc::CacheEntry::State::Loaded) {
+            h.origin = e.blockerOrigin;
+            h.target = e.blockerTarget;
+            if (e.object < 0 && e.coneAngle >= 0.0) {
+                h.coneAxis = e.coneAxis;
+                h.coneAngle = e.coneAngle;
+            }
+        }
+    } else {
+        h.origin = f.origin.object >= 0 ? lists->pointSite(f.origin.object, f.ray.o) : lists->eyeSite();
+        h.target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light)
+                   : f.hit >= 0                  ? lists->pointSite(f.hit, f.ray.at(f.t))
+                                                 : -1;
+        h.coneAngle = emptyConeAround(s.scene(), f);
+    }
+    // No target (a ray that hit nothing) or no entry yet: there is no hull
+    if (h.origin < 0 || h.target < 0 || h.origin >= lists->sites() || h.target >= lists->sites()) {
+        h.origin = h.target = -1;
+        return h;
+    }
+    h.a = lists->siteSphere(h.origin);
+    h.b = lists->siteSphere(h.target);
+    h.targetObject = lists->siteObject(h.target);
+    if (const std::vector<int>* blockers = lists->find(h.origin, h.target))
+        for (int id : *blockers)
+            if (id >= 0 && id < s.scene().size()) h.blockers.push_back(id);
+    return h;
+}
+
+FocusCylinder cylinderOf(const SessionState& s, const RayFocus& f) {
+    FocusCylinder c;
+    if (f.current) {
+        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        if (e.state == rc::CacheEntry::State::Loaded && e.cylinder.radius >= 0.0) {
+            c.cylinder = e.cylinder;
+            c.cached = true;
+            return c;
+        }
+    }
+    c.cylinder = cylinderAround(s.scene(), f);
+    return c;
 }
 
 }  // namespace rcgui

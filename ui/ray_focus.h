@@ -2,6 +2,7 @@
 /// \file
 /// \brief The ray an overlay is drawn for: the one being traced, or one of a selected pixel.
 #include <optional>
+#include <vector>
 
 #include "event_record.h"
 #include "session_state.h"
@@ -47,6 +48,31 @@ struct RayFocus {
     /// else the ray being traced.
     static std::optional<RayFocus> of(const SessionState& s, const Selection& sel);
 };
+
+/// The blocker hull of a ray in focus: its origin and target sites, as the blocker cache
+/// keys them, and the potential blockers listed for the pair.
+struct FocusHull {
+    int origin = -1, target = -1;  ///< blocker-list sites (-1: none, e.g. a ray that hit nothing)
+    rc::Sphere a, b;               ///< their spheres
+    int targetObject = -1;         ///< the object the target site stands for (-1: a light)
+    std::vector<int> blockers;     ///< the listed potential blockers (empty: none or not built)
+    rc::Vec3 coneAxis{0, 0, 1};    ///< an eye ray that hit nothing: the empty cone's axis
+    double coneAngle = -1.0;       ///< ... and its half angle (< 0: none)
+    bool valid() const { return origin >= 0 && target >= 0; }
+};
+
+/// The hull the overlays and the scene view draw for `f`: the active entry's when `f` is
+/// the ray being traced, else the one the blocker cache would key for it. Empty without
+/// blocker lists.
+FocusHull hullOf(const SessionState& s, const RayFocus& f);
+
+/// The cylinder of safety drawn for `f`: the active entry's (`cached`) when it has one,
+/// else the one around its segment. radius < 0: none.
+struct FocusCylinder {
+    rc::SafetyCylinder cylinder;
+    bool cached = false;
+};
+FocusCylinder cylinderOf(const SessionState& s, const RayFocus& f);
 
 /// The Speer-DeRose-Barsky cylinder of safety around a ray's segment: the largest
 /// capsule no other object's bounding sphere enters (radius < 0 if none).

@@ -8,6 +8,7 @@
 #include "image_view.h"
 #include "session_state.h"
 #include "main_window.h"
+#include "scene_view.h"
 
 namespace rcgui {
 
@@ -18,6 +19,7 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
         ok = false;
     });
     if (o.largeFonts) w.setLargeFonts(true);
+    if (o.present) w.setPresentation(true);
     w.setOverlays(o.overlays);
     // Choose everything first, then load: one session is built, with these choices
     w.setCache(o.cache);
@@ -31,9 +33,23 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
     if (o.steps > 0) {
         if (SessionState* s = w.controller().state()) s->runUntil(RunGoal::ToStep, o.steps);
     }
+    if (o.compare) {
+        QString why;
+        if (!w.setCompare(toString(*o.compare), why)) {
+            err << "raycache-gui: --compare: " << why << Qt::endl;
+            return false;
+        }
+        w.syncCompare(true);
+    }
     w.setHeatmap(o.heatmap);
+    if (o.sceneView) {
+        w.setSceneView(true);
+        w.sceneView()->setAngle(o.sceneAngle);
+        w.sceneView()->setOrbit(o.orbitYaw, o.orbitPitch);
+    }
     w.refresh();
-    if (o.firstImpression) w.focusShowcase();
+    // The scene view with nothing selected: a ray worth seeing from the side
+    if (o.firstImpression || (o.sceneView && o.select.x() < 0)) w.focusShowcase();
     if (o.select.x() >= 0) {
         QString why;
         if (!w.selectRay(o.select.x(), o.select.y(), o.selectPath, why)) {
@@ -59,6 +75,7 @@ int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err) {
     QApplication::processEvents();
     ImageView* view = w.imageView();
     view->fit();
+    if (opts.compare) w.compareView()->fit();
     if (opts.zoom != 1.0) {
         // Zoom about the selected pixel, else the pixel of the ray being traced
         QPointF centre(view->image().width() / 2.0, view->image().height() / 2.0);

@@ -32,6 +32,13 @@ void SessionController::reset(SessionConfig config) {
     emit changed();
 }
 
+void SessionController::clear() {
+    cancel();
+    wait();
+    state_.reset();
+    emit changed();
+}
+
 bool SessionController::stepRay() {
     if (busy_ || !state_) return false;
     const bool more = state_->step();

@@ -29,6 +29,8 @@ public:
     const SessionState* state() const { return busy_ ? nullptr : state_.get(); }
     bool busy() const { return busy_; }
 
+    /// Stops any worker and drops the state (state() is null afterwards).
+    void clear();
     /// Traces one ray on the calling (GUI) thread. False if busy or done.
     bool stepRay();
     /// Runs towards `goal` on a worker thread. False if busy.

@@ -6,6 +6,7 @@
 #include <QChartView>
 #include <QLabel>
 #include <QLineSeries>
+#include <QScrollArea>
 #include <QValueAxis>
 #include <QVBoxLayout>
 
@@ -19,7 +20,16 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     text_ = new QLabel(this);
     text_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     text_->setWordWrap(true);
-    layout->addWidget(text_);
+    text_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    // In a scroll area: long text (large fonts, a compared render's table) scrolls rather
+    // than make the window taller than the screen
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(text_);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumHeight(80);
+    layout->addWidget(scroll, 1);
     chart_ = new QChart;
     hits_ = new QLineSeries;
     hits_->setName("hits");
@@ -30,7 +40,11 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     tests_ = new QLineSeries;
     tests_->setName("tests (right)");
     tests_->setColor(QColor(0, 114, 178));
-    for (QLineSeries* s : {hits_, misses_, tests_}) chart_->addSeries(s);
+    otherTests_ = new QLineSeries;
+    otherTests_->setName("tests, compared (right)");
+    QPen dashed(QColor(204, 121, 167), 2.0, Qt::DashLine);
+    otherTests_->setPen(dashed);
+    for (QLineSeries* s : {hits_, misses_, tests_, otherTests_}) chart_->addSeries(s);
     axisX_ = new QValueAxis;
     axisX_->setTitleText("steps");
     axisX_->setLabelFormat("%.0f");
@@ -41,7 +55,9 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     chart_->addAxis(axisX_, Qt::AlignBottom);
     chart_->addAxis(axisY_, Qt::AlignLeft);
     chart_->addAxis(axisTests_, Qt::AlignRight);
-    for (QLineSeries* s : {hits_, misses_, tests_}) s->attachAxis(axisX_);
+    for (QLineSeries* s : {hits_, misses_, tests_, otherTests_}) s->attachAxis(axisX_);
+    otherTests_->attachAxis(axisTests_);
+    otherTests_->setVisible(false);
     hits_->attachAxis(axisY_);
     misses_->attachAxis(axisY_);
     tests_->attachAxis(axisTests_);
@@ -50,14 +66,16 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     auto* view = new QChartView(chart_, this);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(200);
-    layout->addWidget(view, 1);
+    layout->addWidget(view, 2);
 }
 
 void StatsPanel::showProgress(qint64 steps, double progress) {
     text_->setText(QString("running… %1 steps, %2% of the eye rays").arg(steps).arg(progress * 100.0, 0, 'f', 1));
 }
 
-void StatsPanel::refresh(const SessionState* state) {
+QString StatsPanel::summaryText() const { return text_->text(); }
+
+void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
     if (!state) return;
     const rc::RenderSession& s = state->session();
     const rc::Counters& n = s.counters();
@@ -79,6 +97,35 @@ void StatsPanel::refresh(const SessionState* state) {
     // What this scene and these options leave out (no shadow rays without lights, ...)
     for (const std::string& line : rc::leftOut(s.scene(), &s.options()))
         t += QString("<br><b>left out</b> %1").arg(QString::fromStdString(line).toHtmlEscaped());
+    // A compared render: both side by side, and how many tests the second makes more;
+    // first, so that it shows without scrolling
+    if (other) {
+        const QString own = t;
+        t.clear();
+        const rc::RenderSession& o = other->session();
+        const rc::Counters& m = o.counters();
+        auto name = [](const rc::RenderSession& r) {
+            return QString("%1/%2").arg(text(rc::toString(r.options().cache))).arg(text(rc::toString(r.options().order)));
+        };
+        auto row = [](const QString& what, double a, double b) {
+            const double d = b - a;
+            return QString("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4%5</td></tr>")
+                .arg(what).arg(a, 0, 'f', 0).arg(b, 0, 'f', 0).arg(d > 0 ? "+" : "").arg(d, 0, 'f', 0);
+        };
+        t += QString("<b>compared</b> at step %1%2<table cellspacing=0 cellpadding=2>"
+                     "<tr><th></th><th>%3</th><th>%4</th><th>difference</th></tr>")
+                 .arg(o.steps()).arg(o.steps() == s.steps() ? "" : QString(" (catching up to %1)").arg(s.steps()))
+                 .arg(name(s), name(o));
+        t += row("tests", double(n.intersectionTests), double(m.intersectionTests));
+        t += row("complete searches", double(n.completeSearches), double(m.completeSearches));
+        t += row("hits", double(n.hits), double(m.hits));
+        t += row("misses", double(n.misses), double(m.misses));
+        t += row("deferrals", double(n.deferrals), double(m.deferrals));
+        t += "</table>";
+        if (n.intersectionTests > 0)
+            t += QString("tests: %1x the left").arg(double(m.intersectionTests) / double(n.intersectionTests), 0, 'f', 2);
+        t += "<br>" + own;
+    }
     text_->setText(t);
 
     QList<QPointF> h, m, te;
@@ -93,9 +140,18 @@ void StatsPanel::refresh(const SessionState* state) {
     hits_->replace(h);
     misses_->replace(m);
     tests_->replace(te);
+    double mostTests = double(n.intersectionTests);
+    otherTests_->setVisible(other != nullptr);
+    if (other) {
+        QList<QPointF> ot;
+        for (const StatSample& p : other->recorder().samples()) ot << QPointF(double(p.step), double(p.tests));
+        ot << QPointF(double(other->session().steps()), double(other->session().counters().intersectionTests));
+        otherTests_->replace(ot);
+        mostTests = std::max(mostTests, double(other->session().counters().intersectionTests));
+    }
     axisX_->setRange(0, std::max<double>(1.0, double(s.steps())));
     axisY_->setRange(0, std::max<double>(1.0, double(std::max(n.hits, n.misses)) * 1.05));
-    axisTests_->setRange(0, std::max<double>(1.0, double(n.intersectionTests) * 1.05));
+    axisTests_->setRange(0, std::max<double>(1.0, mostTests * 1.05));
     // Round ticks, each label different (no "0 0 1 1 1" on small ranges)
     for (QValueAxis* a : {axisX_, axisY_, axisTests_}) {
         a->setTickCount(5);
@@ -114,7 +170,7 @@ void StatsPanel::setLargeFonts(bool on) {
         a->setTitleFont(title);
     }
     chart_->legend()->setFont(f);
-    for (QLineSeries* s : {hits_, misses_, tests_}) {
+    for (QLineSeries* s : {hits_, misses_, tests_, otherTests_}) {
         QPen pen = s->pen();
         pen.setWidthF(on ? 3.5 : 2.0);
         s->setPen(pen);

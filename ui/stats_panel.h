@@ -20,15 +20,19 @@ public:
     explicit StatsPanel(QWidget* parent = nullptr);
     /// Axis labels, titles, legend and line widths for a projector (or back).
     void setLargeFonts(bool on);
-    /// Refreshes from `state` (null: a worker is running; shows only `steps`).
-    void refresh(const SessionState* state);
+    /// Refreshes from `state` (null: a worker is running; shows only `steps`). With a
+    /// compared render `other`, adds a table of both and their difference, and its tests
+    /// to the chart.
+    void refresh(const SessionState* state, const SessionState* other = nullptr);
+    /// The text shown above the chart (HTML).
+    QString summaryText() const;
     /// While a worker runs: the step count it reported.
     void showProgress(qint64 steps, double progress);
 
 private:
     QLabel* text_;
     QChart* chart_;
-    QLineSeries *hits_, *misses_, *tests_;
+    QLineSeries *hits_, *misses_, *tests_, *otherTests_;
     QValueAxis *axisX_, *axisY_, *axisTests_;
 };
 

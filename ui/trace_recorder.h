@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "block_vector.h"
 #include "event_record.h"
 #include "order/ray_order.h"
 
@@ -28,9 +29,12 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
-    const std::vector<EventRecord>& events() const { return events_; }
+    const BlockVector<EventRecord>& events() const { return events_; }
     /// Indices into events() of committed misses and of deferrals, in order.
-    const std::vector<std::int32_t>& misses() const { return misses_; }
+    const BlockVector<std::int32_t>& misses() const { return misses_; }
+    /// Bytes the per-event record takes (events and the miss index), to weigh against
+    /// events().size(). The per-pixel tallies come on top: width x height x 21 bytes.
+    std::size_t eventBytes() const { return events_.bytes() + misses_.bytes(); }
     /// The last event heard (committed or deferred), if any.
     const std::optional<rc::TraceEvent>& lastEvent() const { return last_; }
     /// The last committed event, if any.
@@ -57,8 +61,8 @@ public:
 private:
     int width_, height_;
     const rc::RayOrder* order_;
-    std::vector<EventRecord> events_;
-    std::vector<std::int32_t> misses_;
+    BlockVector<EventRecord> events_;
+    BlockVector<std::int32_t> misses_;
     std::vector<std::int32_t> lastOfPixel_;
     std::vector<std::int32_t> tests_;
     std::vector<std::uint16_t> hits_, missCount_;

@@ -161,6 +161,30 @@ Scene makePair() {
     return s;
 }
 
+/// The paper's Figure 2 with its blocker: a ray reflects off the big mirror sphere and
+/// hits the small one, and a third sphere lies in the hull between the two, off the
+/// reflected rays' way: the one potential blocker on their list.
+Scene makeTrio() {
+    Scene s;
+    s.name = "trio";
+    s.background = Vec3(0.10, 0.10, 0.15);
+    s.addSphere(Sphere{Vec3(0.0), 1.0}, s.addMaterial({Vec3(0.85, 0.85, 0.9), 0.15, 0.85, 100.0}));
+    s.addSphere(Sphere{Vec3(2.4, 0.5, 1.0), 0.45}, s.addMaterial({kPalette[0], 0.8, 0.2, 20.0}));
+    // Half way along the axis from the big sphere to the small one, 0.36 off it: inside
+    // their hull, whose radius there is about 0.72
+    s.addSphere(Sphere{Vec3(1.15, 0.6, 0.45), 0.15}, s.addMaterial({kPalette[2], 0.8, 0.2, 20.0}));
+    Camera& cam = s.camera;
+    cam.from = Vec3(0.6, 0.6, 6.5);
+    cam.at = Vec3(0.9, 0.3, 0.4);
+    cam.up = Vec3(0.0, 1.0, 0.0);
+    cam.angle = 45.0;
+    cam.hither = 1e-3;
+    cam.width = cam.height = 256;
+    s.lights.push_back({Vec3(-3.0, 4.0, 5.0), Vec3(1.0)});
+    s.finalize();
+    return s;
+}
+
 bool endsWithNff(const std::string& s) {
     if (s.size() < 4) return false;
     const std::string tail = s.substr(s.size() - 4);
@@ -175,6 +199,7 @@ std::vector<BuiltinInfo> builtinScenes() {
         {"glass", "refracting glass spheres in front of and among opaque ones, on a ground square"},
         {"fill", "one diffuse sphere filling the 64x64 view, lit from the eye: coherence 1"},
         {"pair", "a big mirror sphere reflecting a small one, the paper's Figure 2"},
+        {"trio", "the pair with a third sphere in the hull between them: Figure 2's potential blocker"},
     };
 }
 
@@ -182,6 +207,7 @@ Scene makeBuiltin(const std::string& spec, std::uint64_t seed) {
     if (spec == "glass") return makeGlass(seed);
     if (spec == "fill") return makeFill();
     if (spec == "pair") return makePair();
+    if (spec == "trio") return makeTrio();
     const std::string usage = "expected cube:N with N a whole number from 1 to " + std::to_string(kMaxCube);
     if (spec == "cube" || spec == "cube:") throw SceneError(spec, 0, 0, "the cube scene needs a size: " + usage);
     if (spec.rfind("cube:", 0) == 0) {

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// \brief Built-in scene generators (`cube:N`, `glass`, `fill`, `pair`) and loadScene().
+/// \brief Built-in scene generators (`cube:N`, `glass`, `fill`, `pair`, `trio`) and loadScene().
 ///
 /// The generators are deterministic across machines and compilers: random numbers come
 /// from std::mt19937_64 and are turned into doubles by hand, never through the
@@ -32,6 +32,8 @@ std::vector<BuiltinInfo> builtinScenes();
 ///   that the coherence is 1; 64x64. Does not depend on `seed`.
 /// - `pair`: a big mirror sphere and a small sphere whose reflection it shows (the
 ///   paper's Figure 2); 256x256. Does not depend on `seed`.
+/// - `trio`: `pair` with a third, small sphere inside the hull between the two (the
+///   potential blocker of the paper's Figure 2); 256x256. Does not depend on `seed`.
 /// Scene::name is the canonical spec ("cube:8", "glass", ...).
 /// \throws SceneError(spec, 0, 0, message) for an unknown name or a bad N.
 Scene makeBuiltin(const std::string& spec, std::uint64_t seed = 1986);

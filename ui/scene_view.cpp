@@ -1,0 +1,466 @@
+#include "scene_view.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+#include <glm/geometric.hpp>
+
+#include "geometry/safety_cylinder.h"
+#include "palette.h"
+#include "projector.h"
+
+namespace rcgui {
+
+namespace {
+
+QColor withAlpha(QColor c, int a) {
+    c.setAlpha(a);
+    return c;
+}
+
+QPen pen(const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine) {
+    QPen p(c, width, style, Qt::RoundCap, Qt::RoundJoin);
+    p.setCosmetic(true);
+    return p;
+}
+
+// A unit vector perpendicular to `n`, as close to `want` as can be
+rc::Vec3 perpendicular(const rc::Vec3& n, const rc::Vec3& want) {
+    rc::Vec3 v = want - n * glm::dot(want, n);
+    if (glm::length(v) < 1e-6) {
+        const rc::Vec3 other = std::abs(n.x) < 0.9 ? rc::Vec3(1, 0, 0) : rc::Vec3(0, 1, 0);
+        v = other - n * glm::dot(other, n);
+    }
+    return glm::normalize(v);
+}
+
+rc::Vec3 rotate(const rc::Vec3& v, const rc::Vec3& axis, double radians) {
+    const double c = std::cos(radians), s = std::sin(radians);
+    return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1 - c);
+}
+
+QString num(double v) { return QString::number(v, 'g', 3); }
+
+}  // namespace
+
+SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel) {
+    SceneSketch k;
+    const rc::Scene& scene = s.scene();
+    for (int id = 0; id < scene.size(); ++id) {
+        const rc::Object& o = scene.objects[std::size_t(id)];
+        Body b{id, o.shape, o.bound, {}};
+        if (o.shape == rc::Shape::Polygon) b.polygon = scene.polygons[std::size_t(o.index)].vertices;
+        k.bodies.push_back(std::move(b));
+    }
+    for (const rc::Light& l : scene.lights) k.lights.push_back(l.position);
+    k.eye = scene.camera.from;
+    k.forward = glm::normalize(scene.camera.at - scene.camera.from);
+    k.up = perpendicular(k.forward, scene.camera.up);
+    k.bound = scene.bound;
+    k.hasCylinder = s.session().options().cache != rc::CacheKind::Blocker;
+    k.focus = RayFocus::of(s, sel);
+    if (!k.focus) return k;
+    const RayFocus& f = *k.focus;
+    k.focusLabel = QString("%1 of pixel (%2,%3)")
+                       .arg(QString::fromStdString(s.session().cacheTree().label(f.node)))
+                       .arg(f.pixel % s.width())
+                       .arg(f.pixel / s.width());
+    // The pixel's ray tree: every committed ray, the one in focus marked
+    const TraceRecorder& rec = s.recorder();
+    for (int i : rec.eventsOf(f.pixel)) {
+        if (rec.events()[std::size_t(i)].deferred()) continue;
+        if (auto r = RayFocus::ofEvent(s, i))
+            k.rays.push_back({r->ray.o, r->segmentEnd(scene), r->kind, i == f.event});
+    }
+    if (f.deferred) k.rays.push_back({f.ray.o, f.segmentEnd(scene), f.kind, true});
+    k.hull = hullOf(s, f);
+    k.cylinder = cylinderOf(s, f);
+    // The object that sets the cylinder's radius: nearest its axis, the ray's own excepted
+    const rc::SafetyCylinder& c = k.cylinder.cylinder;
+    if (c.radius >= 0.0) {
+        double best = rc::kNoHit;
+        for (int id = 0; id < scene.size(); ++id) {
+            if (id == f.hit || id == f.origin.object) continue;
+            const rc::Sphere& b = scene.objects[std::size_t(id)].bound;
+            const double gap = rc::segmentDistance(b.c, c.a, c.b) - b.r;
+            if (gap < best) {
+                best = gap;
+                k.limiter = id;
+            }
+        }
+    }
+    return k;
+}
+
+// [scene-basis]
+SceneBasis SceneBasis::of(const SceneSketch& k, SceneAngle angle, double yaw, double pitch) {
+    SceneBasis b;
+    // The axis of what is in focus: from the hull's origin to its target, else the ray
+    rc::Vec3 axis = k.forward;
+    if (k.focus) axis = glm::normalize(k.focus->ray.d);
+    if (k.hull.valid() && glm::length(k.hull.b.c - k.hull.a.c) > 1e-9) axis = glm::normalize(k.hull.b.c - k.hull.a.c);
+    switch (angle) {
+        case SceneAngle::Side:  // across the axis: it runs left to right, the camera's up is up
+            b.x = axis;
+            b.y = perpendicular(axis, k.up);
+            b.z = glm::cross(b.x, b.y);
+            break;
+        case SceneAngle::Along: {  // down the ray in focus, from behind its origin
+            const rc::Vec3 d = k.focus ? glm::normalize(k.focus->ray.d) : k.forward;
+            b.z = -d;
+            b.y = perpendicular(b.z, k.up);
+            b.x = glm::cross(b.y, b.z);
+            break;
+        }
+        case SceneAngle::Top:  // from above: the eye's view direction points up the screen
+            b.z = k.up;
+            b.y = perpendicular(b.z, k.forward);
+            b.x = glm::cross(b.y, b.z);
+            break;
+        case SceneAngle::Front:  // from the eye's side, without perspective
+            b.z = -k.forward;
+            b.y = k.up;
+            b.x = glm::cross(b.y, b.z);
+            break;
+    }
+    // Orbit: yaw about the screen's up, then pitch about the screen's x
+    const double ya = yaw * M_PI / 180.0, pa = pitch * M_PI / 180.0;
+    b.x = rotate(b.x, b.y, ya);
+    b.z = rotate(b.z, b.y, ya);
+    b.y = rotate(b.y, b.x, pa);
+    b.z = rotate(b.z, b.x, pa);
+    return b;
+}
+// [scene-basis]
+
+QPointF SceneBasis::project(const rc::Vec3& p) const { return {glm::dot(p, x), glm::dot(p, y)}; }
+double SceneBasis::depth(const rc::Vec3& p) const { return glm::dot(p, z); }
+
+QPolygonF discHull(const QPointF& a, double ra, const QPointF& b, double rb, int samples) {
+    QPolygonF pts;
+    for (int i = 0; i < samples; ++i) {
+        const double t = 2.0 * M_PI * i / samples;
+        const QPointF u(std::cos(t), std::sin(t));
+        pts << a + ra * u << b + rb * u;
+    }
+    return convexHull(pts);
+}
+
+SceneView::SceneView(QWidget* parent) : QWidget(parent) {
+    setMinimumSize(200, 200);
+    auto* layout = new QVBoxLayout(this);
+    auto* row = new QHBoxLayout;
+    angleBox_ = new QComboBox(this);
+    angleBox_->addItem("side: across the ray (Figure 2)", int(SceneAngle::Side));
+    angleBox_->addItem("along the ray (Figure 1)", int(SceneAngle::Along));
+    angleBox_->addItem("top", int(SceneAngle::Top));
+    angleBox_->addItem("front", int(SceneAngle::Front));
+    angleBox_->setToolTip("How the scene is seen; drag to orbit, wheel to zoom, double-click to reset");
+    wholeBox_ = new QCheckBox("whole scene", this);
+    wholeBox_->setToolTip("Frame the whole scene, not the ray in focus");
+    row->addStretch(1);
+    row->addWidget(angleBox_);
+    row->addWidget(wholeBox_);
+    layout->addStretch(1);
+    layout->addLayout(row);
+    connect(angleBox_, &QComboBox::activated, this, [this](int i) { setAngle(SceneAngle(angleBox_->itemData(i).toInt())); });
+    connect(wholeBox_, &QCheckBox::toggled, this, &SceneView::setWholeScene);
+}
+
+void SceneView::setSketch(SceneSketch sketch) {
+    sketch_ = std::move(sketch);
+    update();
+}
+
+void SceneView::setAngle(SceneAngle a) {
+    angle_ = a;
+    yaw_ = pitch_ = 0.0;
+    zoom_ = 1.0;
+    angleBox_->setCurrentIndex(angleBox_->findData(int(a)));
+    update();
+}
+
+void SceneView::setLayers(bool cylinder, bool hull) {
+    cylinderShown_ = cylinder;
+    hullShown_ = hull;
+    update();
+}
+
+void SceneView::setOrbit(double yaw, double pitch) {
+    yaw_ = yaw;
+    pitch_ = std::clamp(pitch, -90.0, 90.0);
+    update();
+}
+
+void SceneView::setWholeScene(bool on) {
+    whole_ = on;
+    if (wholeBox_->isChecked() != on) wholeBox_->setChecked(on);
+    zoom_ = 1.0;
+    update();
+}
+
+QPointF SceneView::toWidget(const rc::Vec3& p) const {
+    const QPointF q = basis_.project(p);
+    return QPointF(width() / 2.0 + (q.x() - centre_.x()) * scale_, height() / 2.0 - (q.y() - centre_.y()) * scale_);
+}
+
+void SceneView::frame() {
+    basis_ = SceneBasis::of(sketch_, angle_, yaw_, pitch_);
+    // What must be seen: the ray in focus with its hull, cylinder and blockers; else the scene
+    QRectF box;
+    auto add = [&](const rc::Vec3& c, double r) {
+        const QPointF q = basis_.project(c);
+        const QRectF b(q.x() - r, q.y() - r, 2 * r, 2 * r);
+        box = box.isNull() ? b : box.united(b);
+    };
+    const SceneSketch& k = sketch_;
+    if (!whole_ && k.focus) {
+        if (k.hull.valid()) {
+            add(k.hull.a.c, k.hull.a.r);
+            add(k.hull.b.c, k.hull.b.r);
+            for (int id : k.hull.blockers) add(k.bodies[std::size_t(id)].bound.c, k.bodies[std::size_t(id)].bound.r);
+        }
+        if (k.cylinder.cylinder.radius > 0.0) {
+            add(k.cylinder.cylinder.a, k.cylinder.cylinder.radius);
+            add(k.cylinder.cylinder.b, k.cylinder.cylinder.radius);
+        }
+        if (k.focus->hit >= 0 && k.focus->hit < int(k.bodies.size()))
+            add(k.bodies[std::size_t(k.focus->hit)].bound.c, k.bodies[std::size_t(k.focus->hit)].bound.r);
+        if (cylinderShown_ && k.limiter >= 0 && k.cylinder.cylinder.radius > 0.0)
+            add(k.bodies[std::size_t(k.limiter)].bound.c, k.bodies[std::size_t(k.limiter)].bound.r);
+        if (angle_ != SceneAngle::Along) {
+            for (const auto& s : k.rays)
+                if (s.focus) {
+                    add(s.a, 0.0);
+                    add(s.b, 0.0);
+                }
+        } else {
+            add(k.focus->ray.o, 0.0);
+        }
+    }
+    if (box.isNull() || box.width() + box.height() <= 0.0) {
+        add(k.bound.c, k.bound.r);
+        add(k.eye, 0.0);
+    }
+    const double margin = 0.12 * std::max(box.width(), box.height()) + 1e-9;
+    box.adjust(-margin, -margin, margin, margin);
+    // Room for the caption above and the angle box below
+    const double top = 4.0 * QFontMetricsF(font()).height() + 16, bottom = angleBox_->sizeHint().height() + 16;
+    const double w = std::max(1.0, width() - 16.0), h = std::max(1.0, height() - top - bottom);
+    scale_ = zoom_ * std::min(w / box.width(), h / box.height());
+    centre_ = box.center();
+    // Shift so the drawing sits between the caption and the angle box
+    centre_.ry() += (top - bottom) / 2.0 / scale_;
+}
+
+void SceneView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), QColor(28, 30, 36));
+    p.setRenderHint(QPainter::Antialiasing, true);
+    frame();
+    const SceneSketch& k = sketch_;
+    const double lw = std::max(1.0, QFontMetricsF(font()).height() / 9.0);  // lines follow Large fonts
+    auto disc = [&](const rc::Sphere& s) {
+        const QPointF c = toWidget(s.c);
+        const double r = std::max(1.0, s.r * scale_);
+        return QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r);
+    };
+    auto hull = [&](const rc::Sphere& a, const rc::Sphere& b) {
+        return discHull(toWidget(a.c), a.r * scale_, toWidget(b.c), b.r * scale_);
+    };
+    std::vector<bool> blocker(k.bodies.size(), false);
+    for (int id : k.hull.blockers) blocker[std::size_t(id)] = true;
+    const int target = k.hull.valid() ? k.hull.targetObject : (k.focus ? k.focus->hit : -1);
+
+    // [scene-view-paint]
+    // The objects, farthest first, so that nearer ones are drawn over them
+    std::vector<int> order(k.bodies.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return basis_.depth(k.bodies[std::size_t(a)].bound.c) < basis_.depth(k.bodies[std::size_t(b)].bound.c);
+    });
+    for (int id : order) {
+        const SceneSketch::Body& b = k.bodies[std::size_t(id)];
+        const bool bold = blocker[std::size_t(id)] || id == target || (cylinderShown_ && id == k.limiter) ||
+                          (k.focus && (id == k.focus->hit || id == k.focus->origin.object));
+        const QColor line = bold ? QColor(235, 235, 235) : QColor(150, 150, 160);
+        if (b.shape == rc::Shape::Polygon) {
+            QPolygonF poly;
+            for (const rc::Vec3& v : b.polygon) poly << toWidget(v);
+            p.setPen(pen(line, (bold ? 2.5 : 1.0) * lw));
+            p.setBrush(QColor(90, 90, 100, 90));
+            p.drawPolygon(poly);
+        } else {
+            p.setPen(pen(line, (bold ? 3.0 : 1.2) * lw, b.shape == rc::Shape::Cone ? Qt::DashLine : Qt::SolidLine));
+            p.setBrush(QColor(70, 72, 84, 200));
+            p.drawEllipse(disc(b.bound));
+        }
+    }
+    // The blocker hull of origin and target, its potential blockers, origin and target
+    if (k.hull.valid() && hullShown_) {
+        p.setPen(pen(palette::kHull, 2.5 * lw));
+        p.setBrush(withAlpha(palette::kHull, 45));
+        p.drawPolygon(hull(k.hull.a, k.hull.b));
+        p.setBrush(Qt::NoBrush);
+        p.setPen(pen(palette::kOrigin, 2.0 * lw, Qt::DashLine));
+        if (k.hull.a.r > 0) p.drawEllipse(disc(k.hull.a));
+        p.setPen(pen(palette::kTarget, 3.0 * lw));
+        p.setBrush(withAlpha(palette::kTarget, 50));
+        if (k.hull.b.r > 0) p.drawEllipse(disc(k.hull.b));
+        p.setPen(pen(palette::kBlocker, 3.0 * lw));
+        p.setBrush(withAlpha(palette::kBlocker, 110));
+        for (int id : k.hull.blockers) p.drawEllipse(disc(k.bodies[std::size_t(id)].bound));
+    }
+    // The cylinder of safety: a capsule, so its outline is the hull of its end discs
+    const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
+    if (k.focus && cyl.radius > 0.0 && cylinderShown_) {
+        p.setPen(pen(palette::kCylinder, 2.5 * lw, k.cylinder.cached ? Qt::SolidLine : Qt::DashLine));
+        p.setBrush(withAlpha(palette::kCylinder, 60));
+        p.drawPolygon(hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius}));
+    }
+    // The ray tree of the pixel in focus; the ray in focus thick, with its direction
+    for (const auto& s : k.rays) {
+        const QColor c = s.kind == rc::RayKind::Shadow ? QColor(255, 245, 157) : palette::kRay;
+        p.setPen(pen(QColor(0, 0, 0, 170), (s.focus ? 4.5 : 2.5) * lw));
+        p.drawLine(toWidget(s.a), toWidget(s.b));
+        p.setPen(pen(c, (s.focus ? 3.0 : 1.2) * lw, s.kind == rc::RayKind::Shadow ? Qt::DashLine : Qt::SolidLine));
+        p.drawLine(toWidget(s.a), toWidget(s.b));
+    }
+    if (k.focus) {
+        // The ray's axis: a + where it starts (seen end-on in the view along the ray)
+        const QPointF o = toWidget(k.focus->ray.o);
+        const double m = 7.0 * lw;
+        p.setPen(pen(palette::kRay, 2.5 * lw));
+        p.drawLine(o - QPointF(m, 0), o + QPointF(m, 0));
+        p.drawLine(o - QPointF(0, m), o + QPointF(0, m));
+        const QPointF tip = toWidget(k.focus->ray.o + k.focus->ray.d * (40.0 * lw / scale_));
+        const QLineF dir(o, tip);
+        if (dir.length() > 8 * lw) {
+            const QLineF back = QLineF(tip, o).unitVector();
+            const QPointF u = (back.p2() - back.p1()) * (9.0 * lw);
+            const QPointF n(-u.y() * 0.5, u.x() * 0.5);
+            p.setBrush(palette::kRay);
+            p.setPen(pen(Qt::black, 1.0));
+            p.drawPolygon(QPolygonF({tip, tip + u + n, tip + u - n}));
+        }
+    }
+    // Lights (stars) and the eye
+    for (const rc::Vec3& l : k.lights) {
+        const QPointF c = toWidget(l);
+        p.setPen(pen(QColor(255, 214, 0), 2.0 * lw));
+        for (int a = 0; a < 4; ++a) {
+            const double t = a * M_PI / 4;
+            const QPointF d(std::cos(t) * 7 * lw, std::sin(t) * 7 * lw);
+            p.drawLine(c - d, c + d);
+        }
+    }
+    const QPointF eye = toWidget(k.eye);
+    p.setPen(pen(Qt::white, 2.0 * lw));
+    p.setBrush(QColor(40, 40, 40));
+    p.drawEllipse(eye, 5 * lw, 5 * lw);
+    // [scene-view-paint]
+
+    // Labels
+    const QFontMetricsF fm(font());
+    auto label = [&](const QPointF& at, const QString& t, const QColor& c) {
+        QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
+        if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
+        if (r.left() < 4) r.moveLeft(4);
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(0, 0, 0, 150));
+        p.drawRoundedRect(r, 3, 3);
+        p.setPen(c);
+        p.drawText(r, Qt::AlignCenter, t);
+    };
+    label(eye, "eye", Qt::white);
+    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), QColor(255, 214, 0));
+    if (k.hull.valid() && hullShown_) {
+        const rc::Sphere& a = k.hull.a;
+        label(toWidget(a.c) + QPointF(0, a.r * scale_ * 0.7), "origin", palette::kOrigin);
+        label(toWidget(k.hull.b.c) + QPointF(k.hull.b.r * scale_ * 0.5, -k.hull.b.r * scale_ * 0.7),
+              k.hull.targetObject >= 0 ? QString("target #%1").arg(k.hull.targetObject) : QString("target"), palette::kTarget);
+        for (int id : k.hull.blockers) {
+            if (id == k.hull.targetObject || (k.focus && id == k.focus->origin.object)) continue;  // labelled already
+            const rc::Sphere& b = k.bodies[std::size_t(id)].bound;
+            label(toWidget(b.c) + QPointF(b.r * scale_ * 0.7, b.r * scale_), QString("blocker #%1").arg(id), palette::kBlocker);
+        }
+    }
+
+    // Caption: what is seen, with the sizes the paper's figures compare
+    QStringList cap;
+    const QString angleName = angle_ == SceneAngle::Side    ? "Side view, across the ray"
+                              : angle_ == SceneAngle::Along ? "View along the ray (+)"
+                              : angle_ == SceneAngle::Top   ? "Top view"
+                                                            : "Front view (no perspective)";
+    cap << (k.focus ? angleName + ": " + k.focusLabel : angleName + ": no ray in focus");
+    if (k.hull.valid() && hullShown_) {
+        QStringList ids;
+        for (int id : k.hull.blockers)
+            ids << QString("#%1%2").arg(id).arg(k.focus && id == k.focus->origin.object ? " (the origin)" : "");
+        cap << QString("blocker hull of origin (r %1) and target (r %2): %3 potential blocker%4%5")
+                   .arg(num(k.hull.a.r), num(k.hull.b.r)).arg(k.hull.blockers.size())
+                   .arg(k.hull.blockers.size() == 1 ? "" : "s").arg(ids.isEmpty() ? "" : ": " + ids.join(", "));
+    }
+    if (k.focus && cyl.radius > 0.0 && cylinderShown_) {
+        cap << QString("cylinder of safety%1: radius %2").arg(k.cylinder.cached ? "" : " (around this ray)", num(cyl.radius));
+        QString c;
+        const int hit = k.focus->hit;
+        if (hit >= 0 && hit < int(k.bodies.size()))
+            c = QString("%1% of the radius of the sphere hit, #%2 (%3)")
+                    .arg(num(100.0 * cyl.radius / k.bodies[std::size_t(hit)].bound.r)).arg(hit)
+                    .arg(num(k.bodies[std::size_t(hit)].bound.r));
+        if (k.limiter >= 0) c += QString("%1#%2 sets it").arg(c.isEmpty() ? "" : "; ").arg(k.limiter);
+        if (!c.isEmpty()) cap << c;
+    }
+    caption_ = cap.join("\n");
+    double cw = 0;
+    for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
+    // Too wide for the view: a smaller font, not a cut-off line
+    QFontMetricsF cfm = fm;
+    if (cw + 32 > width() && cw > 0) {
+        QFont small = font();
+        small.setPointSizeF(small.pointSizeF() * std::max(0.6, (width() - 32) / cw));
+        p.setFont(small);
+        cfm = QFontMetricsF(small);
+        cw = 0;
+        for (const QString& c : cap) cw = std::max(cw, cfm.horizontalAdvance(c));
+    }
+    const QRectF box(8, 8, cw + 16, cfm.height() * cap.size() + 8);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 175));
+    p.drawRoundedRect(box, 6, 6);
+    p.setPen(Qt::white);
+    for (int i = 0; i < cap.size(); ++i)
+        p.drawText(QRectF(16, 12 + i * cfm.height(), cw + 2, cfm.height()), Qt::AlignVCenter | Qt::AlignLeft, cap[i]);
+}
+
+void SceneView::mousePressEvent(QMouseEvent* e) { lastPos_ = e->position(); }
+
+void SceneView::mouseMoveEvent(QMouseEvent* e) {
+    if (!(e->buttons() & Qt::LeftButton)) return;
+    const QPointF d = e->position() - lastPos_;
+    lastPos_ = e->position();
+    setOrbit(yaw_ + d.x() * 0.5, pitch_ + d.y() * 0.5);
+}
+
+void SceneView::mouseDoubleClickEvent(QMouseEvent*) {
+    yaw_ = pitch_ = 0.0;
+    zoom_ = 1.0;
+    update();
+}
+
+void SceneView::wheelEvent(QWheelEvent* e) {
+    zoom_ = std::clamp(zoom_ * std::pow(1.25, e->angleDelta().y() / 120.0), 0.05, 500.0);
+    update();
+    e->accept();
+}
+
+}  // namespace rcgui

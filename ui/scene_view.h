@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// \brief The scene seen from the side: objects, lights, the eye, the ray tree of the
+/// pixel in focus, its cylinder of safety and blocker hull, in an orthographic view
+/// across the ray (the paper's Figure 2), down the ray (Figure 1), from above or in front.
+#include <optional>
+#include <vector>
+
+#include <QPolygonF>
+#include <QString>
+#include <QWidget>
+
+#include "gui_options.h"
+#include "ray_focus.h"
+
+class QComboBox;
+class QCheckBox;
+
+namespace rcgui {
+
+/// What the scene view draws, copied out of a SessionState (the view keeps no pointer
+/// into a render, which a worker may be changing).
+struct SceneSketch {
+    struct Body {
+        int id = 0;
+        rc::Shape shape = rc::Shape::Sphere;
+        rc::Sphere bound;
+        std::vector<rc::Vec3> polygon;  ///< polygons: their vertices
+    };
+    struct Segment {
+        rc::Vec3 a{0.0}, b{0.0};
+        rc::RayKind kind = rc::RayKind::Primary;
+        bool focus = false;  ///< the ray in focus
+    };
+    std::vector<Body> bodies;
+    std::vector<rc::Vec3> lights;
+    rc::Vec3 eye{0.0}, forward{0, 0, -1}, up{0, 1, 0};
+    rc::Sphere bound;                 ///< the scene's bounding sphere
+    std::vector<Segment> rays;        ///< the ray tree of the pixel in focus
+    std::optional<RayFocus> focus;    ///< the ray in focus
+    QString focusLabel;               ///< its path and pixel, e.g. "eye/reflection of pixel (3,4)"
+    FocusHull hull;
+    FocusCylinder cylinder;
+    bool hasCylinder = false;         ///< the cache keeps cylinders (or none: drawn around the ray)
+    int limiter = -1;                 ///< the object nearest the cylinder's axis: it sets the radius
+
+    /// The sketch of `s` with the ray `sel` puts in focus.
+    static SceneSketch of(const SessionState& s, const Selection& sel);
+};
+
+/// An orthographic projection: screen x and y, and z towards the viewer.
+struct SceneBasis {
+    rc::Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+    /// The basis of `angle` for `sketch`, turned by `yaw` and `pitch` degrees.
+    static SceneBasis of(const SceneSketch& sketch, SceneAngle angle, double yaw, double pitch);
+    QPointF project(const rc::Vec3& p) const;  ///< (x, y) in world units, y up
+    double depth(const rc::Vec3& p) const;     ///< towards the viewer
+};
+
+/// The orthographic outline of the convex hull of two balls: the hull of their discs.
+QPolygonF discHull(const QPointF& a, double ra, const QPointF& b, double rb, int samples = 64);
+
+/// The scene view widget. Drag to orbit, wheel to zoom, double-click to reset.
+class SceneView : public QWidget {
+    Q_OBJECT
+public:
+    explicit SceneView(QWidget* parent = nullptr);
+    void setSketch(SceneSketch sketch);
+    const SceneSketch& sketch() const { return sketch_; }
+    void setAngle(SceneAngle a);
+    SceneAngle angle() const { return angle_; }
+    void setOrbit(double yaw, double pitch);
+    double yaw() const { return yaw_; }
+    double pitch() const { return pitch_; }
+    /// Which of the focused ray's shapes are drawn (the overlay toggles).
+    void setLayers(bool cylinder, bool hull);
+    /// Frame the whole scene rather than the ray in focus.
+    void setWholeScene(bool on);
+    /// Where world point `p` is drawn (widget coordinates), in the current framing.
+    QPointF toWidget(const rc::Vec3& p) const;
+    /// Widget pixels per world unit.
+    double scale() const { return scale_; }
+    /// The caption drawn at the top.
+    const QString& caption() const { return caption_; }
+
+    QSize sizeHint() const override { return {520, 520}; }
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void mousePressEvent(QMouseEvent*) override;
+    void mouseMoveEvent(QMouseEvent*) override;
+    void mouseDoubleClickEvent(QMouseEvent*) override;
+    void wheelEvent(QWheelEvent*) override;
+
+private:
+    void frame();
+    SceneSketch sketch_;
+    SceneAngle angle_ = SceneAngle::Side;
+    double yaw_ = 0.0, pitch_ = 0.0, zoom_ = 1.0;
+    bool whole_ = false;
+    bool cylinderShown_ = true, hullShown_ = true;
+    SceneBasis basis_;
+    double scale_ = 1.0;
+    QPointF centre_;  ///< world (x, y) at the middle of the drawing area
+    QString caption_;
+    QComboBox* angleBox_ = nullptr;
+    QCheckBox* wholeBox_ = nullptr;
+    QPointF lastPos_;
+};
+
+}  // namespace rcgui
