@@ -119,7 +119,7 @@ void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Pro
     rc::SafetyCylinder cyl;
     bool cached = false;
     if (f.current) {
-        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        const rc::CacheEntry& e = s.session().cacheTree().entry(f.node);
         if (e.state == rc::CacheEntry::State::Loaded && e.cylinder.radius >= 0.0) {
             cyl = e.cylinder;
             cached = true;
@@ -141,7 +141,7 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
     rc::Vec3 coneAxis = f.ray.d;
     double coneAngle = -1.0;
     if (f.current) {
-        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        const rc::CacheEntry& e = s.session().cacheTree().entry(f.node);
         if (e.state == rc::CacheEntry::State::Loaded) {
             origin = e.blockerOrigin;
             target = e.blockerTarget;

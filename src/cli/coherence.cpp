@@ -1,0 +1,5 @@
+// placeholder
+#include "cli/commands.h"
+namespace rc::cli {
+void addCoherenceCommand(CLI::App&, Commands&) {}
+}
