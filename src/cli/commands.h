@@ -27,7 +27,7 @@ struct RenderFlags {
     std::uint64_t seed = 1986;
     bool verify = false;
     Sampling sampling;  ///< distributed ray tracing (seed: `seed`)
-    std::string sampleEntries = "per-sample";
+    std::string sampleEntries = "shared";
     /// Adds --width --height --depth --cutoff --band --seed; with `cacheAndOrder` also
     /// --cache and --order.
     void addTo(CLI::App* c, bool cacheAndOrder);

@@ -13,6 +13,7 @@
 
 #include "analysis/image_error.h"
 #include "cli/commands.h"
+#include "cli/plot_script.h"
 #include "render/output_files.h"
 #include "scene/builtin_scenes.h"
 
@@ -32,29 +33,6 @@ struct ConvergenceArgs {
 
 const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
 const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};
-
-// The chart: scripts/plot_convergence.py, found through the environment's
-// RAYCACHE_SCRIPTS_DIR or the folder CMake was configured with
-std::filesystem::path plotScript() {
-    const char* env = std::getenv("RAYCACHE_SCRIPTS_DIR");
-    const std::filesystem::path dir = env && *env ? env : RAYCACHE_SCRIPTS_DIR;
-    return dir / "plot_convergence.py";
-}
-
-std::string shellQuoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-// A python3 that has matplotlib, or ""
-std::string findPython() {
-    for (const char* py : {"/usr/bin/python3", "python3"}) {
-        const std::string cmd = std::string(py) + " -c 'import matplotlib' >/dev/null 2>&1";
-        if (std::system(cmd.c_str()) == 0) return py;
-    }
-    return "";
-}
 
 double at(const std::vector<ProgressPoint>& pts, double fraction) {
     const std::int64_t target = std::int64_t(fraction * double(pts.back().steps));
@@ -173,28 +151,12 @@ int convergence(const ConvergenceArgs& a) {
     if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
     if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
     if (a.plot.empty()) return 0;
-    const std::string python = findPython();
-    if (python.empty()) {
-        std::fprintf(stderr, "raycache: the chart needs python3 with matplotlib (Debian: python3-matplotlib); "
-                             "the numbers are in %s\n", csvPath.c_str());
-        return a.csv.empty() ? 1 : 0;
-    }
-    const std::filesystem::path script = plotScript();
-    if (!std::filesystem::is_regular_file(script)) {
-        std::fprintf(stderr, "raycache: the chart script %s is missing (set RAYCACHE_SCRIPTS_DIR); the numbers are in %s\n",
-                     script.c_str(), csvPath.c_str());
-        return 1;
-    }
     const std::string title = scene->name + " at " + std::to_string(base.width) + "x" + std::to_string(base.height) +
                               ": error against run time";
-    const std::string cmd = python + " " + shellQuoted(script.string()) + " " + shellQuoted(csvPath) + " " + shellQuoted(a.plot) +
-                            " " + shellQuoted(title);
-    const int rc = std::system(cmd.c_str());
-    if (a.csv.empty()) std::filesystem::remove(csvPath);
-    if (rc != 0) {
-        std::fprintf(stderr, "raycache: drawing the chart failed\n");
-        return 1;
-    }
+    const int rc = drawChart("plot_convergence.py", csvPath, a.plot, title);
+    if (a.csv.empty() && rc != 1) std::filesystem::remove(csvPath);
+    if (rc == 1) return a.csv.empty() ? 1 : 0;  // no matplotlib: the CSV has the numbers
+    if (rc != 0) return 1;
     std::printf("chart: %s\n", a.plot.c_str());
     return 0;
 }

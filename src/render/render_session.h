@@ -35,7 +35,11 @@ struct RenderOptions {
     /// in pixels. (0, 0), the default, leaves every eye ray as it is.
     glm::dvec2 pixelOffset{0.0, 0.0};
     /// Distributed ray tracing's samples: one path each; whether they share entries.
-    SampleEntries sampleEntries = SampleEntries::PerSample;
+    /// Shared by default: measured on cube:4 at 96x96 (spp 4, light radius 0.3 with 4
+    /// shadow samples, gloss 5 with 2), blocker in scanline order answers 78% of rays from
+    /// its cache with shared entries against 36% per sample, and searches on 0.136 rays in
+    /// 1 against 0.227; breadth-first order is the same either way (see cache_tree.h).
+    SampleEntries sampleEntries = SampleEntries::Shared;
 };
 
 /// A render in progress. `step()` traces exactly one ray: the order picks it, the cache
