@@ -18,7 +18,7 @@ panels = [("hit_rate", "hit rate (rays answered from the cache)"),
           ("searches_per_ray", "complete searches per ray"),
           ("tests_ratio", "intersection tests / no cache, scanline"),
           ("time_ratio", "time (thread CPU) / no cache, scanline")]
-fig, axes = plt.subplots(1, 4, figsize=(20, 5.2))
+fig, axes = plt.subplots(1, 4, figsize=(20, 5.8))
 for ax, (measure, label) in zip(axes, panels):
     for cache in styles:
         for order in colors:
@@ -29,15 +29,15 @@ for ax, (measure, label) in zip(axes, panels):
                     markersize=3, linewidth=1.3, label=f"{cache}, {order}")
     if measure.endswith("ratio"):
         ax.axhline(1.0, color="black", linewidth=0.8)
-        ax.text(x[0], 1.0, " no cache pays no more", fontsize=7, va="bottom")
+        ax.text(x[0], 1.0, " = no cache, scanline: above, the cache costs more", fontsize=7, va="bottom")
     ax.set_xlabel(sweep + (" (degrees)" if sweep == "gloss" else ""))
     ax.set_ylabel(label)
     ax.grid(True, alpha=0.3)
     if min(x) > 0 and max(x) / min(x) >= 8:
-        ax.set_xscale("log", base=2)
-    elif max(x) > 0 and sorted(x)[1] > 0 and max(x) / sorted(x)[1] >= 8:
-        ax.set_xscale("symlog", linthresh=sorted(x)[1], base=10)
-axes[3].legend(fontsize=7, title="cache, order", title_fontsize=7)
+        ax.set_xscale("log", base=2 if sweep == "spp" else 10)
+handles, labels = axes[1].get_legend_handles_labels()
+fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=8, title="cache (line style), order (colour)",
+           title_fontsize=8)
 fig.suptitle(title)
-fig.tight_layout()
+fig.tight_layout(rect=(0, 0.14, 1, 1))
 fig.savefig(out, dpi=100)
