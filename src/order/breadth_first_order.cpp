@@ -7,7 +7,7 @@ namespace rc {
 BreadthFirstOrder::BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, int samples, bool cheapTests,
                                      EyeMaker makeEye)
     : width_(width), height_(rowEnd), band_(band > 0 ? std::min(band, rowEnd - rowBegin) : rowEnd - rowBegin),
-      invWidth_(1.0 / width), samples_(samples), cheapTests_(cheapTests), makeEye_(std::move(makeEye)),
+      samples_(samples), invWidth_(1.0 / width), cheapTests_(cheapTests), makeEye_(std::move(makeEye)),
       nextRow_(rowBegin) {}
 
 bool BreadthFirstOrder::beginPath() {
