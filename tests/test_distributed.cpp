@@ -3,10 +3,15 @@
 // leave the classic image alone at their defaults, and refuse bad settings.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include <sys/wait.h>
@@ -242,4 +247,68 @@ TEST_CASE("bad sampling settings are refused with exit 2 before any work", "[dis
     REQUIRE(exitCode("render cube:2 --width 8 --height 8 --spp 2 --light-radius 0.2 --gloss 3 -o " + png.string()) == 0);
     REQUIRE(std::filesystem::exists(png));
     std::filesystem::remove(png);
+}
+
+namespace {
+/// The rows of a CSV file, each split at commas (the first is the header).
+std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path) {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        std::string cell;
+        while (std::getline(ss, cell, ',')) cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+int column(const std::vector<std::string>& header, const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    return it == header.end() ? -1 : int(it - header.begin());
+}
+}  // namespace
+
+TEST_CASE("coherence sweeps the light radius and the hit rate falls as rays spread", "[distributed][cli]") {
+    // The paper: "if rays were randomly chosen ... we would expect few cache hits". Wider
+    // lights spread the shadow rays of neighbouring pixels apart
+    const std::filesystem::path csv =
+        std::filesystem::temp_directory_path() / ("raycache_coherence_" + std::to_string(::getpid()) + ".csv");
+    REQUIRE(exitCode("coherence cube:4 --sweep light-radius --width 24 --height 24 --repeat 1 --csv " + csv.string()) == 0);
+    const auto rows = readCsv(csv);
+    std::filesystem::remove(csv);
+    REQUIRE(rows.size() >= 5);  // a header and at least 4 values
+    for (const char* name : {"cylinder_scanline_hit_rate", "blocker_scanline_hit_rate", "blocker+_progressive_hit_rate"}) {
+        const int c = column(rows[0], name);
+        INFO(name);
+        REQUIRE(c >= 0);
+        REQUIRE(std::stod(rows.back()[std::size_t(c)]) < std::stod(rows[1][std::size_t(c)]));
+    }
+    // Every configuration traced the same rays: no cache's hit rate is 0, its tests ratio 1
+    REQUIRE(std::stod(rows[1][std::size_t(column(rows[0], "none_scanline_hit_rate"))]) == 0.0);
+    REQUIRE(std::stod(rows[1][std::size_t(column(rows[0], "none_bfs_tests_ratio"))]) == 1.0);
+    // A bad value is refused before any work
+    REQUIRE(exitCode("coherence cube:4 --sweep gloss --values 1,120 --width 8 --height 8") == 2);
+    REQUIRE(exitCode("coherence cube:4 --sweep spp --values 2.5 --width 8 --height 8") == 2);
+    REQUIRE(exitCode("coherence cube:4 --sweep wobble") == 2);
+}
+
+TEST_CASE("stochastic convergence: the error falls as the samples grow, the same for every configuration",
+          "[distributed][cli]") {
+    const std::filesystem::path csv =
+        std::filesystem::temp_directory_path() / ("raycache_stochastic_" + std::to_string(::getpid()) + ".csv");
+    REQUIRE(exitCode("convergence cube:3 --stochastic --width 24 --height 24 --spp 8 --ref-spp 32 --repeat 1 --csv " +
+                     csv.string()) == 0);
+    const auto rows = readCsv(csv);
+    std::filesystem::remove(csv);
+    const int spp = column(rows[0], "spp"), err = column(rows[0], "rmse"), cache = column(rows[0], "cache");
+    REQUIRE((spp >= 0 && err >= 0 && cache >= 0));
+    // 12 configurations at 1, 2, 4, 8 samples
+    REQUIRE(rows.size() == 1 + 12 * 4);
+    std::map<int, std::set<std::string>> errors;
+    for (std::size_t i = 1; i < rows.size(); ++i) errors[std::stoi(rows[i][std::size_t(spp)])].insert(rows[i][std::size_t(err)]);
+    for (const auto& [n, e] : errors) REQUIRE(e.size() == 1);  // identical images, identical errors
+    REQUIRE(std::stod(*errors[8].begin()) < std::stod(*errors[1].begin()));
+    REQUIRE(exitCode("convergence cube:3 --stochastic --spp 300") == 2);
 }
