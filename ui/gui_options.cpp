@@ -43,7 +43,15 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
     const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
     const QCommandLineOption large("large-fonts", "bigger text, for a projector");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large})
+    // Distributed ray tracing, as `raycache render` takes it
+    const QCommandLineOption spp("spp", "pixel samples, stratified and jittered (default 1)", "N");
+    const QCommandLineOption lightRadius("light-radius", "lights become spheres of this radius (default 0)", "R");
+    const QCommandLineOption shadowSamples("shadow-samples", "shadow rays per light and hit when --light-radius > 0", "K");
+    const QCommandLineOption gloss("gloss", "half-angle in degrees of the cone of glossy reflections (default 0)", "DEG");
+    const QCommandLineOption glossSamples("gloss-samples", "reflection rays per hit when --gloss > 0", "K");
+    const QCommandLineOption seed("seed", "seed of distributed ray tracing's samples (default 1986)", "S");
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large,
+                          spp, lightRadius, shadowSamples, gloss, glossSamples, seed})
         p.addOption(o);
     if (!p.parse(args)) {
         message = p.errorText();
@@ -129,6 +137,34 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (!ok || out.zoom < 0.1 || out.zoom > 200) { message = "--zoom must be a number in [0.1, 200]"; return ParseResult::Error; }
     }
     out.largeFonts = p.isSet(large);
+    // Distributed ray tracing: the core's own check, so the limits are the CLI's
+    auto number = [&](const QCommandLineOption& o, double& v) {
+        if (!p.isSet(o)) return true;
+        bool ok = false;
+        v = p.value(o).toDouble(&ok);
+        if (!ok) message = "--" + o.names().front() + " must be a number, not '" + p.value(o) + "'";
+        return ok;
+    };
+    auto count = [&](const QCommandLineOption& o, int& v) {
+        if (!p.isSet(o)) return true;
+        bool ok = false;
+        v = p.value(o).toInt(&ok);
+        if (!ok) message = "--" + o.names().front() + " must be a whole number, not '" + p.value(o) + "'";
+        return ok;
+    };
+    rc::Sampling& sm = out.sampling;
+    if (!count(spp, sm.spp) || !number(lightRadius, sm.lightRadius) || !count(shadowSamples, sm.shadowSamples) ||
+        !number(gloss, sm.glossDegrees) || !count(glossSamples, sm.glossSamples))
+        return ParseResult::Error;
+    if (p.isSet(seed)) {
+        bool ok = false;
+        sm.seed = p.value(seed).toULongLong(&ok);
+        if (!ok) { message = "--seed must be a whole number >= 0"; return ParseResult::Error; }
+    }
+    if (const auto e = rc::samplingError(sm, rc::ShadingOptions{}.maxDepth)) {
+        message = QString::fromStdString(*e);
+        return ParseResult::Error;
+    }
     return ParseResult::Ok;
 }
 
