@@ -31,10 +31,9 @@ std::vector<RayTask> shadeHit(const Scene& s, const Ray& ray, double t, RayOrigi
     RayTask task = primaryTask(ray, 0);
     task.query.origin = from;
     task.depth = depth;
-    CacheTree paths;
     ImageAccumulator image(1, 1);
     std::vector<RayTask> children;
-    shade(s, task, Answer{0, t}, ShadingOptions{}, paths, image, children);
+    shade(s, task, Answer{0, t}, ShadingOptions{}, image, children);
     return children;
 }
 

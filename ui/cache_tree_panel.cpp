@@ -38,7 +38,7 @@ void CacheTreePanel::refresh(const SessionState* state) {
             item->setExpanded(true);
         }
         items[i] = item;
-        const rc::CacheEntry& e = node.entry;
+        const rc::CacheEntry& e = tree.entry(i);
         item->setText(0, QString::fromStdString(tree.label(i)));
         item->setText(1, e.state == rc::CacheEntry::State::Loaded ? "loaded"
                          : e.state == rc::CacheEntry::State::Flushed ? "flushed" : "empty");

@@ -82,7 +82,15 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption compare("compare", "run a second render (another cache and order) in lockstep beside the first, e.g. none:scanline", "cache:order");
     const QCommandLineOption sceneView("scene-view", "show the 3D scene beside the image: side (across the ray in focus, the paper's Figure 2), along (down the ray, Figure 1), top or front", "angle");
     const QCommandLineOption orbit("orbit", "--scene-view: turn the view by YAW and PITCH degrees", "yaw,pitch");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large, present, compare, sceneView, orbit})
+    // Distributed ray tracing, as `raycache render` takes it
+    const QCommandLineOption spp("spp", "pixel samples, stratified and jittered (default 1)", "N");
+    const QCommandLineOption lightRadius("light-radius", "lights become spheres of this radius (default 0)", "R");
+    const QCommandLineOption shadowSamples("shadow-samples", "shadow rays per light and hit when --light-radius > 0", "K");
+    const QCommandLineOption gloss("gloss", "half-angle in degrees of the cone of glossy reflections (default 0)", "DEG");
+    const QCommandLineOption glossSamples("gloss-samples", "reflection rays per hit when --gloss > 0", "K");
+    const QCommandLineOption seed("seed", "seed of distributed ray tracing's samples (default 1986)", "S");
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large,
+                          present, compare, sceneView, orbit, spp, lightRadius, shadowSamples, gloss, glossSamples, seed})
         p.addOption(o);
     // --scene-view may come alone (the side view): give it its default value
     QStringList argv = args;
@@ -195,6 +203,34 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
             message = "--orbit must be YAW,PITCH in degrees (|yaw| <= 360, |pitch| <= 90), not '" + p.value(orbit) + "'";
             return ParseResult::Error;
         }
+    }
+    // Distributed ray tracing: the core's own check, so the limits are the CLI's
+    auto number = [&](const QCommandLineOption& o, double& v) {
+        if (!p.isSet(o)) return true;
+        bool ok = false;
+        v = p.value(o).toDouble(&ok);
+        if (!ok) message = "--" + o.names().front() + " must be a number, not '" + p.value(o) + "'";
+        return ok;
+    };
+    auto count = [&](const QCommandLineOption& o, int& v) {
+        if (!p.isSet(o)) return true;
+        bool ok = false;
+        v = p.value(o).toInt(&ok);
+        if (!ok) message = "--" + o.names().front() + " must be a whole number, not '" + p.value(o) + "'";
+        return ok;
+    };
+    rc::Sampling& sm = out.sampling;
+    if (!count(spp, sm.spp) || !number(lightRadius, sm.lightRadius) || !count(shadowSamples, sm.shadowSamples) ||
+        !number(gloss, sm.glossDegrees) || !count(glossSamples, sm.glossSamples))
+        return ParseResult::Error;
+    if (p.isSet(seed)) {
+        bool ok = false;
+        sm.seed = p.value(seed).toULongLong(&ok);
+        if (!ok) { message = "--seed must be a whole number >= 0"; return ParseResult::Error; }
+    }
+    if (const auto e = rc::samplingError(sm, rc::ShadingOptions{}.maxDepth)) {
+        message = QString::fromStdString(*e);
+        return ParseResult::Error;
     }
     return ParseResult::Ok;
 }

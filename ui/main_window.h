@@ -65,6 +65,8 @@ public:
     void setOrder(rc::OrderKind k);
     /// What answers complete searches (linear, grid, bvh).
     void setAccel(rc::AccelKind k);
+    /// Distributed ray tracing's samples for the next session (no new session is made).
+    void setSampling(const rc::Sampling& s) { options_.shading.sampling = s; }
     /// Selects pixel (x, y) and its ray at cache-tree path `path` (empty: its eye ray).
     /// On a bad pixel or path, says why in `error` and returns false.
     bool selectRay(int x, int y, const QString& path, QString& error);

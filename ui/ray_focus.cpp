@@ -112,7 +112,7 @@ FocusHull hullOf(const SessionState& s, const RayFocus& f) {
     if (!lists) return h;
     h.coneAxis = f.ray.d;
     if (f.current) {
-        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        const rc::CacheEntry& e = s.session().cacheTree().entry(f.node);
         if (e.state == rc::CacheEntry::State::Loaded) {
             h.origin = e.blockerOrigin;
             h.target = e.blockerTarget;
@@ -145,7 +145,7 @@ FocusHull hullOf(const SessionState& s, const RayFocus& f) {
 FocusCylinder cylinderOf(const SessionState& s, const RayFocus& f) {
     FocusCylinder c;
     if (f.current) {
-        const rc::CacheEntry& e = s.session().cacheTree().node(f.node).entry;
+        const rc::CacheEntry& e = s.session().cacheTree().entry(f.node);
         if (e.state == rc::CacheEntry::State::Loaded && e.cylinder.radius >= 0.0) {
             c.cylinder = e.cylinder;
             c.cached = true;

@@ -25,6 +25,7 @@ bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err) {
     w.setCache(o.cache);
     w.setOrder(o.order);
     w.setAccel(o.accel);
+    w.setSampling(o.sampling);
     if (o.width > 0 || o.height > 0) w.setImageSize(o.width, o.height);
     if (!w.loadScene(o.scene) || !ok) {
         w.setErrorReporter([&err](const QString&, const QString& message) { err << message << Qt::endl; });

@@ -76,7 +76,45 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
         ->capture_default_str();
     c->add_option("--band", f.band, "scanlines per band in bfs and progressive orders (0: whole image)")
         ->check(CLI::Range(0, 16384))->capture_default_str();
-    c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter")->capture_default_str();
+    c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter and of distributed ray tracing's samples")
+        ->capture_default_str();
+}
+
+namespace {
+// CLI::Range lets NaN through (no comparison with NaN is true), and inf through an open top
+const CLI::Validator& finiteNumber() {
+    static const CLI::Validator v([](std::string& s) -> std::string {
+        return std::isfinite(std::strtod(s.c_str(), nullptr)) ? "" : "'" + s + "' is not a finite number";
+    }, "", "Finite");
+    return v;
+}
+}  // namespace
+
+void RenderFlags::addSamplingTo(CLI::App* c, bool spp) {
+    // [sampling-flags]
+    Sampling& s = sampling;
+    if (spp)
+        c->add_option("--spp", s.spp, "pixel samples, stratified and jittered (distributed ray tracing)")
+            ->check(CLI::Range(1, kMaxSpp))->capture_default_str();
+    c->add_option("--light-radius", s.lightRadius, "lights become spheres of this radius: soft shadows (0: points)")
+        ->check(finiteNumber())->check(CLI::NonNegativeNumber)->capture_default_str();
+    c->add_option("--shadow-samples", s.shadowSamples, "shadow rays per light and hit when --light-radius > 0")
+        ->check(CLI::Range(1, kMaxShadowSamples))->capture_default_str();
+    c->add_option("--gloss", s.glossDegrees, "half-angle in degrees of the cone of glossy reflections (0: mirror)")
+        ->check(finiteNumber())->check(CLI::Range(0.0, kMaxGlossDegrees))->capture_default_str();
+    c->add_option("--gloss-samples", s.glossSamples, "reflection rays per hit when --gloss > 0")
+        ->check(CLI::Range(1, kMaxGlossSamples))->capture_default_str();
+    c->add_option("--sample-entries", sampleEntries,
+                  "cache entries of samples: per-sample (one per path and sample index) | shared")
+        ->check(CLI::IsMember({"per-sample", "shared"}))->capture_default_str();
+    // What no single flag can check (glossy rays per pixel grow with the depth): at parse
+    // time, so a bad combination stops before the scene is read
+    c->callback([this] {
+        Sampling s = sampling;
+        s.seed = seed;
+        if (const auto e = samplingError(s, depth)) throw CLI::ValidationError(*e);
+    });
+    // [sampling-flags]
 }
 
 RenderOptions RenderFlags::options() const {
@@ -90,6 +128,9 @@ RenderOptions RenderFlags::options() const {
     o.shading.cutoff = cutoff;
     o.band = band;
     o.verify = verify;
+    o.shading.sampling = sampling;
+    o.shading.sampling.seed = seed;
+    o.sampleEntries = sampleEntries == "shared" ? SampleEntries::Shared : SampleEntries::PerSample;
     return o;
 }
 
@@ -172,6 +213,7 @@ void addRenderCommand(CLI::App& app, Commands& out) {
     c->add_option("--threads", a->threads, "threads, each with its own cache tree (0: one per core)")
         ->check(CLI::Range(0, 256))->capture_default_str();
     a->flags.addTo(c, true);
+    a->flags.addSamplingTo(c, true);
     out.push_back({c, [a] { return renderCommand(*a); }});
 }
 

@@ -26,9 +26,15 @@ struct RenderFlags {
     std::string cache = "none", order = "scanline", accel = "linear";
     std::uint64_t seed = 1986;
     bool verify = false;
+    Sampling sampling;  ///< distributed ray tracing (seed: `seed`)
+    std::string sampleEntries = "shared";
     /// Adds --width --height --depth --cutoff --band --seed; with `cacheAndOrder` also
     /// --cache and --order.
     void addTo(CLI::App* c, bool cacheAndOrder);
+    /// Adds distributed ray tracing's options: --light-radius --shadow-samples --gloss
+    /// --gloss-samples --sample-entries, and with `spp` also --spp. Bad values (negative,
+    /// not finite, over a limit) stop the command line with exit 2, before any work.
+    void addSamplingTo(CLI::App* c, bool spp);
     RenderOptions options() const;
 };
 
@@ -43,5 +49,6 @@ void addTable1Command(CLI::App& app, Commands& out);
 void addBenchCommand(CLI::App& app, Commands& out);
 void addStabilityCommand(CLI::App& app, Commands& out);
 void addConvergenceCommand(CLI::App& app, Commands& out);
+void addCoherenceCommand(CLI::App& app, Commands& out);
 
 }  // namespace rc::cli

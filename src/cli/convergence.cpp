@@ -12,7 +12,10 @@
 #include <unistd.h>
 
 #include "analysis/image_error.h"
+#include "render/parallel_render.h"
 #include "cli/commands.h"
+#include "cli/cpu_clock.h"
+#include "cli/plot_script.h"
 #include "render/output_files.h"
 #include "scene/builtin_scenes.h"
 
@@ -22,6 +25,8 @@ namespace {
 
 struct ConvergenceArgs {
     std::string scene, csv, plot;
+    bool stochastic = false;
+    int refSpp = 64;
     int spp = 64;
     int refGrid = 12;
     int samples = 100;
@@ -32,29 +37,6 @@ struct ConvergenceArgs {
 
 const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
 const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};
-
-// The chart: scripts/plot_convergence.py, found through the environment's
-// RAYCACHE_SCRIPTS_DIR or the folder CMake was configured with
-std::filesystem::path plotScript() {
-    const char* env = std::getenv("RAYCACHE_SCRIPTS_DIR");
-    const std::filesystem::path dir = env && *env ? env : RAYCACHE_SCRIPTS_DIR;
-    return dir / "plot_convergence.py";
-}
-
-std::string shellQuoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-// A python3 that has matplotlib, or ""
-std::string findPython() {
-    for (const char* py : {"/usr/bin/python3", "python3"}) {
-        const std::string cmd = std::string(py) + " -c 'import matplotlib' >/dev/null 2>&1";
-        if (std::system(cmd.c_str()) == 0) return py;
-    }
-    return "";
-}
 
 double at(const std::vector<ProgressPoint>& pts, double fraction) {
     const std::int64_t target = std::int64_t(fraction * double(pts.back().steps));
@@ -75,9 +57,111 @@ double meanOver(const std::vector<ProgressPoint>& pts, bool bySeconds) {
     return span > 0.0 ? area / span : 0.0;
 }
 
-int convergence(const ConvergenceArgs& a) {
+// [stochastic-convergence]
+// Distributed ray tracing with 1, 2, 4, ... pixel samples: every cache and order renders the
+// same image at each count (exactness), so they differ only in the time it takes; the error is
+// the RMSE against a reference of many more samples drawn with another seed
+int stochastic(const ConvergenceArgs& a) {
+    if (a.spp > kMaxSpp) throw std::invalid_argument("--stochastic takes at most " + std::to_string(kMaxSpp) + " --spp");
     auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
     RenderOptions base = a.flags.options();
+    if (base.width <= 0 && base.height <= 0) base.width = base.height = 64;
+    if (base.width <= 0) base.width = base.height;
+    if (base.height <= 0) base.height = base.width;
+    std::vector<int> counts;
+    for (int n = 1; n < a.spp; n *= 2) counts.push_back(n);
+    counts.push_back(a.spp);
+    RenderOptions ref = base;
+    ref.cache = CacheKind::BlockerPlus;
+    ref.shading.sampling.spp = a.refSpp;
+    ref.shading.sampling.seed = base.shading.sampling.seed + 1;  // noise of its own
+    for (const RenderOptions& o : {base, ref})
+        if (const auto e = samplingError(o.shading.sampling, o.shading.maxDepth)) throw std::invalid_argument(*e);
+    const double refStart = processSeconds();
+    const LinearImage reference = linearImage(renderParallel(scene, ref, 0).image);
+    const double refSeconds = processSeconds() - refStart;
+
+    const Sampling& sm = base.shading.sampling;
+    std::printf("%s at %dx%d, depth %d: distributed ray tracing (light radius %g with %d shadow samples, gloss %g "
+                "degrees with %d samples, seed %llu) at 1 to %d samples per pixel, against a reference of %d "
+                "samples (seed %llu, %.2f s of CPU). RMSE (values clamped to [0, 1]) and seconds of thread CPU "
+                "time, the fastest of %d runs:\n\n",
+                scene->name.c_str(), base.width, base.height, base.shading.maxDepth, sm.lightRadius, sm.shadowSamples,
+                sm.glossDegrees, sm.glossSamples, (unsigned long long)sm.seed, a.spp, a.refSpp,
+                (unsigned long long)ref.shading.sampling.seed, refSeconds, a.repeat);
+    std::vector<std::string> names;
+    for (CacheKind c : kCaches)
+        for (OrderKind o : kOrders) names.push_back(std::string(toString(c)) + ", " + std::string(toString(o)));
+    std::vector<std::vector<double>> seconds(counts.size(), std::vector<double>(names.size(), 0.0));
+    std::vector<double> error(counts.size(), 0.0);
+    std::vector<std::uint64_t> rays(counts.size(), 0);
+    std::ostringstream csv;
+    csv << "kind,cache,order,steps,spp,seconds,rmse\n";
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        // The configurations take turns, so that the machine's load falls on all alike
+        for (int r = 0; r < a.repeat; ++r)
+            for (std::size_t k = 0; k < names.size(); ++k) {
+                RenderOptions o = base;
+                o.cache = kCaches[k / std::size(kOrders)];
+                o.order = kOrders[k % std::size(kOrders)];
+                o.shading.sampling.spp = counts[i];
+                RenderSession session(scene, o);
+                const double start = threadSeconds();
+                session.run();
+                const double t = threadSeconds() - start;
+                if (r == 0 || t < seconds[i][k]) seconds[i][k] = t;
+                if (r == 0 && k == 0) {
+                    error[i] = rmse(session.image(), reference);
+                    rays[i] = session.counters().totalRays();
+                }
+            }
+        for (std::size_t k = 0; k < names.size(); ++k)
+            csv << "stochastic," << toString(kCaches[k / std::size(kOrders)]) << ','
+                << toString(kOrders[k % std::size(kOrders)]) << ',' << rays[i] << ',' << counts[i] << ','
+                << seconds[i][k] << ',' << error[i] << '\n';
+    }
+    std::printf("%-22s", "spp");
+    for (int n : counts) std::printf(" %8d", n);
+    std::printf("\n%-22s", "RMSE");
+    for (double e : error) std::printf(" %8.5f", e);
+    std::printf("\n");
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        std::printf("%-22s", names[k].c_str());
+        for (std::size_t i = 0; i < counts.size(); ++i) std::printf(" %7.3fs", seconds[i][k]);
+        std::printf("\n");
+    }
+    // Every configuration reaches the same error at the same sample count: the first to reach
+    // it is the fastest at that count
+    std::printf("\nFirst to reach each error (the fastest configuration at that sample count, and how much\n"
+                "longer no cache in scanline order takes):\n\n");
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        const auto best = std::min_element(seconds[i].begin(), seconds[i].end()) - seconds[i].begin();
+        std::printf("  RMSE %.5f (%3d spp): %-22s %7.3f s  (no cache, scanline: %.2fx)\n", error[i], counts[i],
+                    names[std::size_t(best)].c_str(), seconds[i][std::size_t(best)],
+                    seconds[i][0] / seconds[i][std::size_t(best)]);
+    }
+    // [stochastic-convergence]
+    std::string csvPath = a.csv;
+    if (csvPath.empty() && !a.plot.empty())
+        csvPath = (std::filesystem::temp_directory_path() / ("raycache-stochastic-" + std::to_string(getpid()) + ".csv")).string();
+    if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
+    if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
+    if (a.plot.empty()) return 0;
+    const std::string title = scene->name + " at " + std::to_string(base.width) + "x" + std::to_string(base.height) +
+                              ": stochastic error against run time";
+    const int rc = drawChart("plot_stochastic.py", csvPath, a.plot, title);
+    if (a.csv.empty() && rc != 1) std::filesystem::remove(csvPath);
+    if (rc == 1) return a.csv.empty() ? 1 : 0;
+    if (rc != 0) return 1;
+    std::printf("chart: %s\n", a.plot.c_str());
+    return 0;
+}
+
+int convergence(const ConvergenceArgs& a) {
+    if (a.stochastic) return stochastic(a);
+    auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
+    RenderOptions base = a.flags.options();
+    base.shading.sampling = Sampling{};  // the sampling flags are --stochastic's
     if (base.width <= 0 && base.height <= 0) {
         // Default: the scene's size, at most 128 on the longer side
         const int w = scene->camera.width, h = scene->camera.height, m = std::max(w, h);
@@ -173,28 +257,12 @@ int convergence(const ConvergenceArgs& a) {
     if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
     if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
     if (a.plot.empty()) return 0;
-    const std::string python = findPython();
-    if (python.empty()) {
-        std::fprintf(stderr, "raycache: the chart needs python3 with matplotlib (Debian: python3-matplotlib); "
-                             "the numbers are in %s\n", csvPath.c_str());
-        return a.csv.empty() ? 1 : 0;
-    }
-    const std::filesystem::path script = plotScript();
-    if (!std::filesystem::is_regular_file(script)) {
-        std::fprintf(stderr, "raycache: the chart script %s is missing (set RAYCACHE_SCRIPTS_DIR); the numbers are in %s\n",
-                     script.c_str(), csvPath.c_str());
-        return 1;
-    }
     const std::string title = scene->name + " at " + std::to_string(base.width) + "x" + std::to_string(base.height) +
                               ": error against run time";
-    const std::string cmd = python + " " + shellQuoted(script.string()) + " " + shellQuoted(csvPath) + " " + shellQuoted(a.plot) +
-                            " " + shellQuoted(title);
-    const int rc = std::system(cmd.c_str());
-    if (a.csv.empty()) std::filesystem::remove(csvPath);
-    if (rc != 0) {
-        std::fprintf(stderr, "raycache: drawing the chart failed\n");
-        return 1;
-    }
+    const int rc = drawChart("plot_convergence.py", csvPath, a.plot, title);
+    if (a.csv.empty() && rc != 1) std::filesystem::remove(csvPath);
+    if (rc == 1) return a.csv.empty() ? 1 : 0;  // no matplotlib: the CSV has the numbers
+    if (rc != 0) return 1;
     std::printf("chart: %s\n", a.plot.c_str());
     return 0;
 }
@@ -208,8 +276,13 @@ void addConvergenceCommand(CLI::App& app, Commands& out) {
     c->add_option("scene", a->scene, "an .nff file or a built-in such as cube:5")->required();
     c->add_option("--csv", a->csv, "write every sample as CSV")->check(outputFile());
     c->add_option("--plot", a->plot, "draw the chart (.png or .svg) with matplotlib")->check(outputFile());
-    c->add_option("--spp", a->spp, "most jittered samples per pixel")->check(CLI::Range(1, 1024))
+    c->add_option("--spp", a->spp, "most jittered samples per pixel (--stochastic: at most 256)")->check(CLI::Range(1, 1024))
         ->capture_default_str();
+    c->add_flag("--stochastic", a->stochastic,
+                "distributed ray tracing at 1, 2, 4, ... --spp pixel samples (with --light-radius, --gloss ...): "
+                "RMSE against a --ref-spp reference, against seconds");
+    c->add_option("--ref-spp", a->refSpp, "--stochastic: pixel samples of the reference")
+        ->check(CLI::Range(1, kMaxSpp))->capture_default_str();
     c->add_option("--ref-grid", a->refGrid, "the reference takes ref-grid^2 regular samples per pixel")
         ->check(CLI::Range(1, 64))->capture_default_str();
     c->add_option("--repeat", a->repeat, "runs of each progress curve; the fastest is kept")
@@ -220,6 +293,11 @@ void addConvergenceCommand(CLI::App& app, Commands& out) {
     // view of the whole image first, as the paper's conclusion describes
     a->flags.band = 0;
     a->flags.addTo(c, false);
+    // --stochastic only: soft shadows and gloss, one sample of each per pixel sample (Cook's
+    // distributed ray tracing), so that noise falls as the pixel samples grow
+    a->flags.sampling.lightRadius = 0.3;
+    a->flags.sampling.glossDegrees = 5.0;
+    a->flags.addSamplingTo(c, false);
     out.push_back({c, [a] { return convergence(*a); }});
 }
 

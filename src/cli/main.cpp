@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     rc::cli::addBenchCommand(app, commands);
     rc::cli::addStabilityCommand(app, commands);
     rc::cli::addConvergenceCommand(app, commands);
+    rc::cli::addCoherenceCommand(app, commands);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -4,10 +4,11 @@
 
 namespace rc {
 
-BreadthFirstOrder::BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, bool cheapTests,
+BreadthFirstOrder::BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, int samples, bool cheapTests,
                                      EyeMaker makeEye)
     : width_(width), height_(rowEnd), band_(band > 0 ? std::min(band, rowEnd - rowBegin) : rowEnd - rowBegin),
-      invWidth_(1.0 / width), cheapTests_(cheapTests), makeEye_(std::move(makeEye)), nextRow_(rowBegin) {}
+      samples_(samples), invWidth_(1.0 / width), cheapTests_(cheapTests), makeEye_(std::move(makeEye)),
+      nextRow_(rowBegin) {}
 
 bool BreadthFirstOrder::beginPath() {
     if (pathIndex_ < generation_.size()) ++pathIndex_;
@@ -24,12 +25,18 @@ bool BreadthFirstOrder::beginPath() {
             if (nextRow_ >= height_) return false;
             bandRow_ = nextRow_;
             nextRow_ = std::min(height_, bandRow_ + band_);
-            if (paths_.empty()) paths_.resize(1);
-            std::vector<RayTask>& eyes = paths_[0];
-            eyes.clear();
-            eyes.reserve(std::size_t(nextRow_ - bandRow_) * width_);
-            for (int p = bandRow_ * width_; p < nextRow_ * width_; ++p) eyes.push_back(makeEye_(p));
-            generation_.push_back(0);
+            // Each pixel sample's eye rays are a path of their own
+            for (int k = 0; k < samples_; ++k) {
+                RayTask first = makeEye_(bandRow_ * width_, k);
+                const int node = first.node;
+                if (node >= int(paths_.size())) paths_.resize(std::size_t(node) + 1);
+                std::vector<RayTask>& eyes = paths_[node];
+                eyes.clear();
+                eyes.reserve(std::size_t(nextRow_ - bandRow_) * width_);
+                eyes.push_back(std::move(first));
+                for (int p = bandRow_ * width_ + 1; p < nextRow_ * width_; ++p) eyes.push_back(makeEye_(p, k));
+                generation_.push_back(node);
+            }
         }
     }
     // The fill grid of this path: which pixels of the band have a ray on it. Only the

@@ -21,7 +21,8 @@ namespace rc {
 class BreadthFirstOrder final : public RayOrder {
 public:
     /// Scanlines [rowBegin, rowEnd), `band` at a time (0: all).
-    BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, bool cheapTests, EyeMaker makeEye);
+    /// `samples` eye rays per pixel, each pixel sample an eye path of its own.
+    BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, int samples, bool cheapTests, EyeMaker makeEye);
     OrderKind kind() const override { return OrderKind::BreadthFirst; }
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
@@ -37,7 +38,7 @@ private:
     bool beginPath();
     void enqueueNeighbours(int local);
 
-    int width_, height_, band_;
+    int width_, height_, band_, samples_;
     double invWidth_;  ///< 1 / width_
     bool cheapTests_;
     EyeMaker makeEye_;

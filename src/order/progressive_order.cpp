@@ -4,16 +4,17 @@
 
 namespace rc {
 
-ProgressiveOrder::ProgressiveOrder(int width, int rowBegin, int rowEnd, int band, EyeMaker makeEye)
+ProgressiveOrder::ProgressiveOrder(int width, int rowBegin, int rowEnd, int band, int samples, EyeMaker makeEye)
     : width_(width), height_(rowEnd), band_(band > 0 ? band : rowEnd - rowBegin), nextRow_(rowBegin),
-      makeEye_(std::move(makeEye)) {}
+      samples_(samples), makeEye_(std::move(makeEye)) {}
 
 std::optional<Pick> ProgressiveOrder::next() {
     if (queue_.empty()) {
         if (nextRow_ >= height_) return std::nullopt;
         // A new band: its eye rays first
         const int end = std::min(height_, nextRow_ + band_);
-        for (int p = nextRow_ * width_; p < end * width_; ++p) queue_.push_back(makeEye_(p));
+        for (int p = nextRow_ * width_; p < end * width_; ++p)
+            for (int k = 0; k < samples_; ++k) queue_.push_back(makeEye_(p, k));
         nextRow_ = end;
         peak_ = std::max(peak_, queue_.size());
     }

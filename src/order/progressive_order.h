@@ -13,7 +13,7 @@ namespace rc {
 class ProgressiveOrder final : public RayOrder {
 public:
     /// Scanlines [rowBegin, rowEnd), `band` at a time (0: all).
-    ProgressiveOrder(int width, int rowBegin, int rowEnd, int band, EyeMaker makeEye);
+    ProgressiveOrder(int width, int rowBegin, int rowEnd, int band, int samples, EyeMaker makeEye);
     OrderKind kind() const override { return OrderKind::Progressive; }
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
@@ -22,6 +22,7 @@ public:
 private:
     int width_, height_, band_;
     int nextRow_;
+    int samples_;
     EyeMaker makeEye_;
     std::deque<RayTask> queue_;
     std::size_t peak_ = 0;

@@ -39,8 +39,8 @@ struct FrontierView {
 /// Hands out rays one at a time and learns what became of them.
 class RayOrder {
 public:
-    /// `makeEye(pixel)` makes the eye ray of a pixel.
-    using EyeMaker = std::function<RayTask(int pixel)>;
+    /// `makeEye(pixel, sample)` makes the eye ray of a pixel's sample.
+    using EyeMaker = std::function<RayTask(int pixel, int sample)>;
     virtual ~RayOrder() = default;
     virtual OrderKind kind() const = 0;
     /// The next ray, or nothing when the image is done.
@@ -61,9 +61,10 @@ public:
 
 /// Makes an order for the scanlines [rowBegin, rowEnd) of an image `width` wide. `band` is
 /// the number of scanlines breadth-first and progressive orders work on at a time (0: all).
-/// `cheapTests`: whether the cache can answer cheaply (false with no cache: every ray then
-/// extends the fill).
-std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int rowBegin, int rowEnd, int band,
+/// `samples`: eye rays per pixel (distributed ray tracing's pixel samples; each has its
+/// own eye path). `cheapTests`: whether the cache can answer cheaply (false with no cache:
+/// every ray then extends the fill).
+std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int rowBegin, int rowEnd, int band, int samples,
                                     bool cheapTests, RayOrder::EyeMaker makeEye);
 
 }  // namespace rc

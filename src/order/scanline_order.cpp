@@ -7,7 +7,11 @@ namespace rc {
 std::optional<Pick> ScanlineOrder::next() {
     if (stack_.empty()) {
         if (nextPixel_ >= pixels_) return std::nullopt;
-        stack_.push_back(makeEye_(nextPixel_++));
+        stack_.push_back(makeEye_(nextPixel_, nextSample_));
+        if (++nextSample_ == samples_) {
+            nextSample_ = 0;
+            ++nextPixel_;
+        }
     }
     Pick p{std::move(stack_.back()), LookupMode::Full};
     stack_.pop_back();

@@ -9,9 +9,9 @@ namespace rc {
 /// first (a stack), the way a recursive tracer visits it.
 class ScanlineOrder final : public RayOrder {
 public:
-    /// Pixels [first, end) in order.
-    ScanlineOrder(int first, int end, EyeMaker makeEye)
-        : pixels_(end), nextPixel_(first), makeEye_(std::move(makeEye)) {}
+    /// Pixels [first, end) in order, `samples` eye rays each, one ray tree after another.
+    ScanlineOrder(int first, int end, int samples, EyeMaker makeEye)
+        : pixels_(end), nextPixel_(first), samples_(samples), makeEye_(std::move(makeEye)) {}
     OrderKind kind() const override { return OrderKind::Scanline; }
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
@@ -21,6 +21,8 @@ public:
 private:
     int pixels_;
     int nextPixel_;
+    int samples_;
+    int nextSample_ = 0;
     EyeMaker makeEye_;
     std::vector<RayTask> stack_;
     std::size_t peak_ = 0;

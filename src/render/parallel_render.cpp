@@ -12,6 +12,8 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
                            BeamTreeBuilder* beams, const std::function<bool(double)>& progress) {
     // The full image size, resolved the way a session resolves it
     RenderOptions base = options;
+    // Spherical lights: one copy of the scene for every thread
+    scene = withLightRadius(std::move(scene), base.shading.sampling.lightRadius);
     if (base.width <= 0) base.width = scene->camera.width;
     if (base.height <= 0) base.height = scene->camera.height;
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -72,7 +74,7 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
     // [parallel-merge]
     // Integer sums: the merged image is the same for any number of threads
     // Threads number the ray-tree paths in the order they meet them: map them to one tree
-    CacheTree canonical;
+    CacheTree canonical;  // paths only: one per sample
     ParallelRun out;
     out.threads = threads;
     // One thread held every row: its image is the image
@@ -86,8 +88,11 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
         out.regions += s.order().regions();
         const CacheTree& tree = s.cacheTree();
         std::vector<int> map(tree.size(), 0);
-        for (int i = 1; i < tree.size(); ++i)
-            map[i] = canonical.child(map[tree.node(i).parent], tree.node(i).kind, tree.node(i).light);
+        for (int i = 0; i < tree.size(); ++i) {
+            const CacheTree::Node& node = tree.node(i);
+            map[i] = node.parent < 0 ? canonical.root(node.sample)
+                                     : canonical.child(map[node.parent], node.kind, node.light, node.sample);
+        }
         out.completed = out.completed && s.done();
         if (beams) beams->merge(*builders[k], map);
     }

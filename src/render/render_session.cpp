@@ -14,6 +14,7 @@ RenderOptions resolved(const Scene& scene, RenderOptions o) {
     if (o.rowEnd <= 0) o.rowEnd = o.height;
     if (o.rowBegin < 0 || o.rowBegin >= o.rowEnd || o.rowEnd > o.height)
         throw std::invalid_argument("rows must lie within the image and not be empty");
+    if (const auto e = samplingError(o.shading.sampling, o.shading.maxDepth)) throw std::invalid_argument(*e);
     return o;
 }
 }  // namespace
@@ -23,30 +24,46 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
 
 RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options,
                              std::unique_ptr<CompleteSearch> search)
-    : scene_(std::move(scene)),
+    : scene_(withLightRadius(std::move(scene), options.shading.sampling.lightRadius)),
       options_(resolved(*scene_, options)),
       camera_(scene_->camera, options_.width, options_.height),
       search_(search ? std::move(search) : makeCompleteSearch(options_.accel, *scene_)),
       verifier_(*scene_),
       strategy_(makeStrategy(options_.cache, *scene_, *search_)),
+      paths_(options_.sampleEntries),
       image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {
     order_ = makeOrder(options_.order, options_.width, options_.rowBegin, options_.rowEnd, options_.band,
-                       strategy_->caches(), [this](int pixel) {
+                       options_.shading.sampling.spp, strategy_->caches(), [this](int pixel, int sample) {
                            ++primaries_;
-                           return primaryTask(primaryRay(pixel), pixel);
+                           return eyeTask(pixel, sample);
                        });
 }
 
 RenderSession::~RenderSession() = default;
 
-Ray RenderSession::primaryRay(int pixel) const {
-    return camera_.primary(pixel % options_.width + options_.pixelOffset.x,
-                           pixel / options_.width + options_.pixelOffset.y);
+Ray RenderSession::primaryRay(int pixel, int sample) const {
+    // [eye-sample]
+    // One sample: the pixel's own position; several: stratified jitter around it
+    const int spp = options_.shading.sampling.spp;
+    const glm::dvec2 jitter =
+        spp > 1 ? pixelSample(spp, sample, eyeKey(options_.shading.sampling.seed, pixel, sample)) : glm::dvec2(0.0);
+    return camera_.primary(pixel % options_.width + options_.pixelOffset.x + jitter.x,
+                           pixel / options_.width + options_.pixelOffset.y + jitter.y);
+    // [eye-sample]
+}
+
+RayTask RenderSession::eyeTask(int pixel, int sample) {
+    const int spp = options_.shading.sampling.spp;
+    RayTask t = primaryTask(primaryRay(pixel, sample), pixel, sample,
+                            eyeKey(options_.shading.sampling.seed, pixel, sample), spp > 1 ? 1.0 / spp : 1.0);
+    t.node = paths_.root(sample);
+    return t;
 }
 
 double RenderSession::progress() const {
     if (done_) return 1.0;
-    return double(primaries_) / (double(options_.width) * (options_.rowEnd - options_.rowBegin));
+    return double(primaries_) / (double(options_.width) * (options_.rowEnd - options_.rowBegin) *
+                                 options_.shading.sampling.spp);
 }
 
 void RenderSession::removeSink(TraceSink* sink) {
@@ -88,9 +105,10 @@ bool RenderSession::step() {
             Counters scratch;
             if (!(verifier_.nearest(task.query, scratch) == lookup.answer)) ++counters_.verifyDisagreements;
         }
-        // Shade: add to the pixel, spawn the children
+        // Shade: add to the pixel, spawn the children; the cache tree gives each its path
         children_.clear();
-        shade(*scene_, task, lookup.answer, options_.shading, paths_, image_, children_);
+        shade(*scene_, task, lookup.answer, options_.shading, image_, children_);
+        for (RayTask& c : children_) c.node = paths_.child(task.node, c.query.kind, c.query.light, c.sample);
         // [session-step]
         tell(false);
         order_->committed(task, lookup.decision, children_);

@@ -79,4 +79,14 @@ SceneError::SceneError(std::string f, int l, int c, std::string m)
     : std::runtime_error(f + ":" + std::to_string(l) + ":" + std::to_string(c) + ": " + m),
       file(std::move(f)), line(l), column(c), message(std::move(m)) {}
 
+std::shared_ptr<const Scene> withLightRadius(std::shared_ptr<const Scene> scene, double radius) {
+    if (!(radius > 0.0)) return scene;
+    bool same = true;
+    for (const Light& l : scene->lights) same = same && l.radius == radius;
+    if (same) return scene;
+    auto copy = std::make_shared<Scene>(*scene);
+    for (Light& l : copy->lights) l.radius = radius;
+    return copy;
+}
+
 }  // namespace rc

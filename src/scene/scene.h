@@ -2,6 +2,7 @@
 /// \file
 /// \brief The immutable scene: spheres, polygons, materials, lights, camera.
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -79,6 +80,11 @@ struct Scene {
     /// lights reach. Margins that absorb rounding are this times a few ulps.
     double extent() const;
 };
+
+/// The scene with every light a sphere of radius `radius` (distributed ray tracing's soft
+/// shadows): `scene` itself when the radius is not positive or every light has it already,
+/// else a copy.
+std::shared_ptr<const Scene> withLightRadius(std::shared_ptr<const Scene> scene, double radius);
 
 /// A scene that could not be read: `file:line:column: message`.
 class SceneError : public std::runtime_error {

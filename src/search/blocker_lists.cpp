@@ -116,7 +116,9 @@ Sphere BlockerLists::siteSphere(int site) const {
     if (site < scene_.size()) return scene_.objects[site].bound;
     if (site == eyeSite()) return {scene_.camera.from, 0.0};
     if (site >= firstTileSite()) return tileSpheres_[std::size_t(site - firstTileSite())];
-    return {scene_.lights[site - scene_.size() - 1].position, 0.0};
+    // A spherical light: its shadow rays end anywhere in its sphere
+    const Light& light = scene_.lights[std::size_t(site - scene_.size() - 1)];
+    return {light.position, light.radius};
 }
 
 std::size_t BlockerLists::slot(std::uint64_t key) const {

@@ -32,8 +32,8 @@ struct BlockerList {
 inline constexpr std::size_t kLongList = 32;
 
 /// Lists of potential blockers keyed by (origin site, target site). A site is an object
-/// id, the eye (`eyeSite()`), a light (`lightSite(k)`), or a tile of a large polygon, each
-/// a sphere: a point is a sphere of radius 0.
+/// id, the eye (`eyeSite()`), a light (`lightSite(k)`: its sphere, when it has a radius),
+/// or a tile of a large polygon, each a sphere: a point is a sphere of radius 0.
 ///
 /// Tiles (blocker+): the paper bounds every object by a sphere, and a large polygon's
 /// sphere is a poor fit: the hull from the eye to a ground quad's sphere holds every

@@ -2,27 +2,54 @@
 
 namespace rc {
 
-CacheTree::CacheTree() { nodes_.push_back({}); }
+CacheTree::CacheTree(SampleEntries sharing) : sharing_(sharing) { root(0); }
 
-int CacheTree::child(int node, RayKind kind, int light) {
-    for (int c : nodes_[node].children)
-        if (nodes_[c].kind == kind && nodes_[c].light == light) return c;
+int CacheTree::make(int parent, RayKind kind, int light, int sample) {
+    // [sample-entries]
+    // Shared: the path's twin that takes sample 0 at every step lends it its entry (the
+    // twin is made first if need be); per sample: an entry of its own
+    int twin = -1;
+    if (sharing_ == SampleEntries::Shared && (sample != 0 || (parent >= 0 && canonical_[parent] != parent)))
+        twin = parent < 0 ? root(0) : child(canonical_[parent], kind, light, 0);
+    // [sample-entries]
     Node n;
-    n.parent = node;
+    n.parent = parent;
     n.kind = kind;
     n.light = light;
-    n.depth = nodes_[node].depth + 1;
-    nodes_.push_back(n);
-    const int id = int(nodes_.size()) - 1;
-    nodes_[node].children.push_back(id);
+    n.sample = sample;
+    n.depth = parent < 0 ? 1 : nodes_[parent].depth + 1;
+    const int id = int(nodes_.size());
+    if (twin >= 0) {
+        n.entry = nodes_[twin].entry;
+    } else {
+        n.entry = int(entries_.size());
+        entries_.emplace_back();
+    }
+    canonical_.push_back(twin >= 0 ? twin : id);
+    nodes_.push_back(std::move(n));
+    if (parent >= 0) nodes_[parent].children.push_back(id);
     return id;
+}
+
+int CacheTree::root(int sample) {
+    if (sample < int(roots_.size()) && roots_[sample] >= 0) return roots_[sample];
+    if (sample >= int(roots_.size())) roots_.resize(std::size_t(sample) + 1, -1);
+    const int id = make(-1, RayKind::Primary, -1, sample);
+    roots_[sample] = id;
+    return id;
+}
+
+int CacheTree::child(int node, RayKind kind, int light, int sample) {
+    for (int c : nodes_[node].children)
+        if (nodes_[c].kind == kind && nodes_[c].light == light && nodes_[c].sample == sample) return c;
+    return make(node, kind, light, sample);
 }
 
 void CacheTree::flushBelow(int node) {
     // [flush-below]
     // A miss at a parent: the children's rays now start somewhere else
     for (int c : nodes_[node].children) {
-        CacheEntry& e = nodes_[c].entry;
+        CacheEntry& e = entry(c);
         if (e.state == CacheEntry::State::Loaded) e.state = CacheEntry::State::Flushed;
         flushBelow(c);
     }
@@ -30,15 +57,15 @@ void CacheTree::flushBelow(int node) {
 }
 
 void CacheTree::clear() {
-    for (Node& n : nodes_) n.entry = {};
+    for (CacheEntry& e : entries_) e = {};
 }
 
 std::string CacheTree::label(int node) const {
-    if (node == 0) return "eye";
     const Node& n = nodes_[node];
-    std::string me(toString(n.kind));
-    if (n.kind == RayKind::Shadow) me += " " + std::to_string(n.light + 1);
-    return label(n.parent) + "/" + me;
+    std::string me(n.parent < 0 ? std::string_view("eye") : toString(n.kind));
+    if (n.kind == RayKind::Shadow) me.append(" ").append(std::to_string(n.light + 1));
+    if (n.sample > 0) me.append(" #").append(std::to_string(n.sample));
+    return n.parent < 0 ? me : label(n.parent).append("/").append(me);
 }
 
 }  // namespace rc

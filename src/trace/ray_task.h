@@ -1,6 +1,8 @@
 #pragma once
 /// \file
 /// \brief A ray waiting to be traced: a link of some pixel's ray tree.
+#include <cstdint>
+
 #include "search/query.h"
 
 namespace rc {
@@ -11,8 +13,15 @@ namespace rc {
 struct RayTask {
     Query query;
     int pixel = 0;    ///< y * width + x
-    int node = 0;     ///< its path in the cache tree
+    int node = 0;     ///< its path in the cache tree (set by the render from `sample`)
     int depth = 1;    ///< the eye ray is depth 1
+    /// Which sample it is among its parent's rays of its kind (shadow rays to the same
+    /// light, glossy reflections), or its pixel sample for an eye ray
+    int sample = 0;
+    /// The key of its random numbers: a hash of the seed, the pixel, and every step of its
+    /// path (kind, light, sample), so that what it draws never depends on the order of
+    /// tracing, the thread, the cache or the search
+    std::uint64_t key = 0;
     Vec3 weight{1.0};  ///< what this ray finds is multiplied by this
     /// Shadow rays: the light this pixel receives if nothing is in the way (weighted).
     Vec3 unblocked{0.0};

@@ -11,16 +11,19 @@ namespace {
 double maxComponent(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 }  // namespace
 
-RayTask primaryTask(const Ray& ray, int pixel) {
+RayTask primaryTask(const Ray& ray, int pixel, int sample, std::uint64_t key, double weight) {
     RayTask t;
     t.query.ray = ray;
     t.query.kind = RayKind::Primary;
     t.pixel = pixel;
+    t.sample = sample;
+    t.key = key;
+    t.weight = Vec3(weight);
     return t;
 }
 
 void shade(const Scene& scene, const RayTask& task, const Answer& hit, const ShadingOptions& opt,
-           CacheTree& paths, ImageAccumulator& image, std::vector<RayTask>& children) {
+           ImageAccumulator& image, std::vector<RayTask>& children) {
     const Query& q = task.query;
     // [shade-leaves]
     // A shadow ray that reaches its light brings the light it was carrying
@@ -46,15 +49,19 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     auto origin = [&](const Vec3& d) {
         return RayOrigin{hit.object, sphere ? glm::dot(d, outward) < 0.0 : obj.shape == Shape::Cone};
     };
-    auto spawn = [&](RayKind kind, int light, const Ray& ray, double tmax, const Vec3& weight) {
+    // A child names its step; the render finds its path in the cache tree
+    auto spawn = [&](RayKind kind, int light, int sample, const Ray& ray, double tmax, const Vec3& weight) {
         RayTask c;
         c.query = {ray, tmax, origin(ray.d), kind, light};
         c.pixel = task.pixel;
-        c.node = paths.child(task.node, kind, light);
+        c.node = -1;
         c.depth = task.depth + 1;
+        c.sample = sample;
+        c.key = childKey(task.key, kind, light, sample);
         c.weight = weight;
         return c;
     };
+    const Sampling& sampling = opt.sampling;
 
     // [shade-local]
     image.add(task.pixel, task.weight * opt.ambient * m.kd * m.color);
@@ -62,22 +69,31 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     const double lightScale = scene.lights.empty() ? 0.0 : 1.0 / std::sqrt(double(scene.lights.size()));
     for (int k = 0; k < int(scene.lights.size()); ++k) {
         const Light& light = scene.lights[k];
-        const Vec3 toLight = light.position - p;
-        const double dist = glm::length(toLight);
-        if (!(dist > 0.0)) continue;
-        const Vec3 l = toLight / dist;
-        const double cosine = glm::dot(n, l);
-        if (cosine <= 0.0) continue;  // the light is behind the surface
-        const Vec3 r = glm::reflect(-l, n);
-        const double spec = m.ks > 0.0 && m.shine > 0.0
-                                ? m.ks * std::pow(std::max(0.0, glm::dot(r, -q.ray.d)), m.shine)
-                                : 0.0;
-        const Vec3 light_in = task.weight * light.color * lightScale * (m.kd * cosine * m.color + Vec3(spec));
-        if (maxComponent(light_in) <= 0.0) continue;  // nothing to gain: no shadow ray
-        // The shadow ray carries the light it would bring
-        RayTask s = spawn(RayKind::Shadow, k, Ray{p, l}, dist, task.weight);
-        s.unblocked = light_in;
-        children.push_back(s);
+        // A point light gets one shadow ray; a spherical one K, to points of its sphere,
+        // each bringing 1/K of what it would bring alone
+        const int samples = light.radius > 0.0 ? sampling.shadowSamples : 1;
+        for (int j = 0; j < samples; ++j) {
+            const Vec3 target = light.radius > 0.0
+                                    ? lightSample(light, p, childKey(task.key, RayKind::Shadow, k, j))
+                                    : light.position;
+            const Vec3 toLight = target - p;
+            const double dist = glm::length(toLight);
+            if (!(dist > 0.0)) continue;
+            const Vec3 l = toLight / dist;
+            const double cosine = glm::dot(n, l);
+            if (cosine <= 0.0) continue;  // the light is behind the surface
+            const Vec3 r = glm::reflect(-l, n);
+            const double spec = m.ks > 0.0 && m.shine > 0.0
+                                    ? m.ks * std::pow(std::max(0.0, glm::dot(r, -q.ray.d)), m.shine)
+                                    : 0.0;
+            Vec3 light_in = task.weight * light.color * lightScale * (m.kd * cosine * m.color + Vec3(spec));
+            if (samples > 1) light_in /= double(samples);
+            if (maxComponent(light_in) <= 0.0) continue;  // nothing to gain: no shadow ray
+            // The shadow ray carries the light it would bring
+            RayTask s = spawn(RayKind::Shadow, k, j, Ray{p, l}, dist, task.weight);
+            s.unblocked = light_in;
+            children.push_back(s);
+        }
     }
     // [shade-local]
 
@@ -85,8 +101,23 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     if (task.depth >= opt.maxDepth) return;
     // Reflection, weighted by Ks
     const Vec3 wr = task.weight * m.ks;
-    if (m.ks > 0.0 && maxComponent(wr) >= opt.cutoff && maxComponent(wr) > 0.0)
-        children.push_back(spawn(RayKind::Reflection, -1, Ray{p, glm::normalize(glm::reflect(q.ray.d, n))}, kNoHit, wr));
+    if (m.ks > 0.0 && maxComponent(wr) >= opt.cutoff && maxComponent(wr) > 0.0) {
+        const Vec3 mirror = glm::normalize(glm::reflect(q.ray.d, n));
+        if (!(sampling.glossDegrees > 0.0)) {
+            children.push_back(spawn(RayKind::Reflection, -1, 0, Ray{p, mirror}, kNoHit, wr));
+        } else {
+            // Glossy: K directions in the cone around the mirror direction, each 1/K of
+            // the weight; one that dips under the surface is mirrored back above it
+            const double halfAngle = sampling.glossDegrees * 3.14159265358979323846 / 180.0;
+            const int samples = sampling.glossSamples;
+            for (int j = 0; j < samples; ++j) {
+                Vec3 d = coneSample(mirror, halfAngle, childKey(task.key, RayKind::Reflection, -1, j));
+                const double below = glm::dot(d, n);
+                if (below <= 0.0) d = glm::normalize(d - 2.0 * below * n);
+                children.push_back(spawn(RayKind::Reflection, -1, j, Ray{p, d}, kNoHit, wr / double(samples)));
+            }
+        }
+    }
     // Refraction, weighted by Kt; total internal reflection turns it back inside
     const Vec3 wt = task.weight * m.kt;
     if (m.kt > 0.0 && maxComponent(wt) >= opt.cutoff && maxComponent(wt) > 0.0) {
@@ -98,7 +129,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
             d = glm::dot(refracted, refracted) > 0.0 ? glm::normalize(refracted)
                                                      : glm::normalize(glm::reflect(q.ray.d, n));
         }
-        children.push_back(spawn(RayKind::Refraction, -1, Ray{p, d}, kNoHit, wt));
+        children.push_back(spawn(RayKind::Refraction, -1, 0, Ray{p, d}, kNoHit, wt));
     }
     // [shade-spawn]
 }

@@ -228,7 +228,7 @@ TEST_CASE("The blocker hull overlay outlines the target green and the blockers o
         REQUIRE(f.state().step());
         const auto& e = f.state().recorder().lastEvent();
         if (e->deferred || e->task.query.kind != rc::RayKind::Primary || e->lookup.answer.object < 0) continue;
-        const rc::CacheEntry& entry = f.state().session().cacheTree().node(e->task.node).entry;
+        const rc::CacheEntry& entry = f.state().session().cacheTree().entry(e->task.node);
         const std::vector<int>* l = lists->find(entry.blockerOrigin, entry.blockerTarget);
         if (l && !l->empty()) {
             blockers = l;
@@ -263,7 +263,7 @@ TEST_CASE("The cylinder overlay draws the active entry's capsule", "[gui][overla
         REQUIRE(f.state().step());
         const auto& e = f.state().recorder().lastEvent();
         if (e->task.query.kind != rc::RayKind::Reflection) continue;
-        const rc::CacheEntry& entry = f.state().session().cacheTree().node(e->task.node).entry;
+        const rc::CacheEntry& entry = f.state().session().cacheTree().entry(e->task.node);
         if (entry.cylinder.radius > 0.02) {
             cyl = entry.cylinder;
             break;

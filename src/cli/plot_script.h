@@ -1,0 +1,16 @@
+#pragma once
+// Charts drawn by the matplotlib scripts in scripts/plot_*.py, found through the
+// environment's RAYCACHE_SCRIPTS_DIR or the folder CMake was configured with.
+#include <string>
+
+namespace rc::cli {
+
+/// A python3 that has matplotlib, or "".
+std::string findPython();
+
+/// Runs scripts/`script` on `csv`, writing the chart `out` with `title`. Returns 0; 1 when
+/// there is no python3 with matplotlib; 2 when the script is missing or fails (with a
+/// message on stderr).
+int drawChart(const std::string& script, const std::string& csv, const std::string& out, const std::string& title);
+
+}  // namespace rc::cli
