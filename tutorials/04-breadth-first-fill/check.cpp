@@ -26,7 +26,7 @@ namespace {
 // one-entry cache that holds the key of the last complete search. Returns the number of
 // regions it seeds.
 long libraryRegions(int width, int height, int band, const std::vector<int>& key) {
-    rc::BreadthFirstOrder order(width, 0, height, band, true, [](int pixel) {
+    rc::BreadthFirstOrder order(width, 0, height, band, 1, true, [](int pixel, int) {
         rc::RayTask t;
         t.pixel = pixel;
         return t;
