@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install what is missing, build everything (core, CLI, GUI, tutorials, docs) and run the
-# whole test suite. Warnings in the docs fail the build. Then the core and threaded
+# whole test suite. Warnings in the docs fail the build. Then the core, threaded and GUI
 # suites again under AddressSanitizer and UBSan (preset asan), the threaded render tests
 # under ThreadSanitizer (preset tsan), and a bounded fuzz run (RAYCACHE_FUZZ_SECONDS,
 # default 60; scripts/fuzz.sh runs longer). Prints how long each stage took.
@@ -19,8 +19,8 @@ stage() { echo "== $1: $((SECONDS - start)) s"; start=$SECONDS; }
 start=0
 stage "default build and tests"
 
-# The core library, the CLI, raycache_tests and the threaded tests under AddressSanitizer
-# and UBSan
+# The core library, the CLI, the GUI, raycache_tests, the threaded tests and the GUI tests
+# (offscreen Qt) under AddressSanitizer and UBSan, leak checks on (no suppressions needed)
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
 ctest --preset asan -j "$jobs"

@@ -389,7 +389,10 @@ TEST_CASE("A bad --select or --accel keeps the scene and says why", "[gui][cli]"
 
 TEST_CASE("The key sits beside the image when there is room, presentation mode hides the panels", "[gui][layout]") {
     Window f("pair");
-    for (int i = 0; i < 2000; ++i) f.w.stepRay();
+    // 2000 rays traced (on the worker: stepping them one by one repaints the window each time)
+    f.w.goToStep(2000);
+    f.w.controller().wait();
+    REQUIRE(f.state().session().steps() == 2000);
     f.w.setOverlays(*Overlays::parse("all"));
     f.w.setHeatmap(Heatmap::Tests);
     f.w.setPresentation(true);
@@ -412,8 +415,10 @@ TEST_CASE("The key sits beside the image when there is room, presentation mode h
 
 TEST_CASE("Hovering a pixel tells its tests, hits and misses", "[gui][layout]") {
     Window f("pair", rc::CacheKind::Blocker, rc::OrderKind::Scanline);
-    for (int i = 0; i < 3000; ++i) f.w.stepRay();
+    f.w.goToStep(3000);
+    f.w.controller().wait();
     const SessionState& s = f.state();
+    REQUIRE(s.session().steps() == 3000);
     const int px = s.recorder().events()[10].pixel;
     const QString tip = f.w.imageView()->tooltipAt(px % s.width(), px / s.width());
     REQUIRE(tip.contains(QString("%1 tests").arg(s.recorder().testsAt(px))));
