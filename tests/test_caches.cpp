@@ -1,6 +1,7 @@
 // Exactness: every cache strategy answers every ray exactly as the complete search does.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 
@@ -8,6 +9,7 @@
 
 #include "random_scenes.h"
 #include "render/render_session.h"
+#include "search/accelerator.h"
 #include "search/blocker_cache.h"
 #include "search/cylinder_cache.h"
 
@@ -101,6 +103,84 @@ TEST_CASE("cheap lookups never search and never reload the entry", "[cache]") {
     }
 }
 
+namespace {
+/// A complete search that counts the searches made through it, whatever the strategy's
+/// own counters say
+class CountingSearch final : public CompleteSearch {
+public:
+    CountingSearch(const Scene& scene, const CompleteSearch& inner) : CompleteSearch(scene), inner_(inner) {}
+    Answer nearest(const Query& q, Counters& n) const override {
+        ++searches;
+        return inner_.nearest(q, n);
+    }
+    std::string name() const override { return inner_.name(); }
+    void cull(SphereCull& c) const override { inner_.cull(c); }
+    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override {
+        return inner_.clearance(a, b, skip, skipToo, cap);
+    }
+    double nearRadius() const override { return inner_.nearRadius(); }
+    bool cheap() const override { return inner_.cheap(); }
+    mutable std::uint64_t searches = 0;
+
+private:
+    const CompleteSearch& inner_;
+};
+}  // namespace
+
+TEST_CASE("CheapOnly never searches, in front of every search and with every cache", "[cache][cheap]") {
+    // As the breadth-first order does: each ray is first asked cheaply, then (when its
+    // turn comes) fully. Large scenes, so that blocker+ meets long lists in front of a
+    // grid or hierarchy (which it searches past) and tiles large polygons.
+    for (Layout layout : {Layout::Overlapping, Layout::Transparent, Layout::Polygons}) {
+        const Scene scene = testing::randomScene(layout, 7, 120);
+        const LinearSearch linear(scene);
+        const std::vector<Query> queries = queryStream(scene, 77);
+        for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
+            const auto inner = makeCompleteSearch(accel, scene);
+            const CountingSearch search(scene, *inner);
+            for (CacheKind kind : allCacheKinds()) {
+                auto strategy = makeStrategy(kind, scene, search);
+                INFO(scene.name << " " << toString(accel) << " " << toString(kind));
+                if (!strategy->caches()) {
+                    // Without a cache every lookup searches: the orders never ask it cheaply
+                    CHECK(kind == CacheKind::None);
+                    continue;
+                }
+                CacheEntry entries[kRayKinds + 2];
+                Counters n, scratch;
+                std::uint64_t known = 0, deferred = 0, fullSearches = 0;
+                for (const Query& q : queries) {
+                    CacheEntry& e = entries[q.kind == RayKind::Shadow ? kRayKinds + q.light : int(q.kind)];
+                    const Answer truth = linear.nearest(q, scratch);
+                    const std::uint64_t before = search.searches, counted = n.completeSearches;
+                    const Lookup cheap = strategy->lookup(q, e, LookupMode::CheapOnly, n);
+                    REQUIRE(search.searches == before);
+                    REQUIRE(n.completeSearches == counted);
+                    REQUIRE_FALSE(cheap.searched);
+                    if (cheap.known) {
+                        ++known;
+                        REQUIRE(cheap.answer == truth);
+                        continue;
+                    }
+                    ++deferred;
+                    const Lookup full = strategy->lookup(q, e, LookupMode::Full, n);
+                    REQUIRE(full.known);
+                    REQUIRE(full.answer == truth);
+                    // The strategy's own count of complete searches is the true one
+                    fullSearches += search.searches - before;
+                    REQUIRE(n.completeSearches - counted == search.searches - before);
+                    REQUIRE(full.searched == (search.searches > before));
+                }
+                // Both paths ran: the stream is coherent enough for cheap answers, and
+                // not so coherent that nothing is deferred
+                CHECK(known > 0);
+                CHECK(deferred > 0);
+                CHECK(fullSearches > 0);
+            }
+        }
+    }
+}
+
 TEST_CASE("images are identical across caches and orders on random scenes, --verify agrees",
           "[cache][exact][image]") {
     for (Layout layout : kLayouts) {
@@ -129,6 +209,22 @@ TEST_CASE("images are identical across caches and orders on random scenes, --ver
     }
 }
 
+namespace {
+/// How far sphere `s` lies from the hull of spheres `a` and `b`, computed apart from the
+/// library: the hull is the union of the spheres interpolated between a and b, and the gap
+/// to the sphere interpolated at l is convex in l, so a ternary search finds its least value
+double hullGap(const Sphere& s, const Sphere& a, const Sphere& b) {
+    auto gap = [&](double l) { return glm::length(s.c - (a.c + l * (b.c - a.c))) - (a.r + l * (b.r - a.r)) - s.r; };
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 200; ++i) {
+        const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+        if (gap(m1) < gap(m2)) hi = m2;
+        else lo = m1;
+    }
+    return std::min({gap(0.0), gap(1.0), gap(0.5 * (lo + hi))});
+}
+}  // namespace
+
 TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]") {
     auto scene = std::make_shared<const Scene>(testing::randomScene(Layout::Overlapping, 9));
     RenderOptions o;
@@ -140,13 +236,57 @@ TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]
     REQUIRE(lists != nullptr);
     REQUIRE(n.blockerListsBuilt == lists->size());
     // no O(n^3) precomputation: far fewer lists than (sites)^2
-    const std::size_t sites = std::size_t(scene->size() + 1 + scene->lights.size());
-    REQUIRE(n.blockerListsBuilt < sites * sites);
+    const int sites = lists->sites();
+    REQUIRE(sites == scene->size() + 1 + int(scene->lights.size()));
+    REQUIRE(n.blockerListsBuilt < std::size_t(sites * sites));
+    // Every list built holds exactly the objects whose bounding spheres meet the hull of
+    // its two sites, the target excepted, as a second computation of the hull finds them
+    // (up to a hair of rounding either way)
+    const double tolerance = 1e-7 * scene->extent();
+    std::uint64_t found = 0, longest = 0, listed = 0, borderline = 0;
+    for (int origin = 0; origin < sites; ++origin)
+        for (int target = 0; target < sites; ++target) {
+            const std::vector<int>* list = lists->find(origin, target);
+            if (!list) continue;
+            ++found;
+            longest = std::max<std::uint64_t>(longest, list->size());
+            const Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
+            for (int id = 0; id < scene->size(); ++id) {
+                const double gap = hullGap(scene->objects[id].bound, a, b);
+                const bool in = std::count(list->begin(), list->end(), id) == 1;
+                INFO("pair " << origin << " -> " << target << " object " << id << " gap " << gap);
+                if (id == lists->siteObject(target)) {
+                    REQUIRE_FALSE(in);
+                } else if (gap < -tolerance) {
+                    REQUIRE(in);
+                } else if (gap > tolerance) {
+                    REQUIRE_FALSE(in);
+                } else {
+                    ++borderline;
+                }
+                listed += in;
+            }
+        }
+    REQUIRE(found == n.blockerListsBuilt);
+    REQUIRE(longest == n.blockerListMax);
+    REQUIRE(listed > found);   // the lists are not empty
+    REQUIRE(borderline < 10);  // the tolerance decides almost nothing
     // each list tests every object once, the target excepted
     const std::uint64_t objects = std::uint64_t(scene->size());
     REQUIRE(n.hullTests >= n.blockerListsBuilt * (objects - 1));
     REQUIRE(n.hullTests <= n.blockerListsBuilt * objects);
-    REQUIRE(n.blockerListMax <= std::uint64_t(scene->size()));
+
+    // A pair met again finds its list: nothing built, no hull tested
+    const LinearSearch linear(*scene);
+    BlockerLists fresh(*scene, linear);
+    Counters first, again;
+    const BlockerList& built = fresh.get(fresh.eyeSite(), 0, first);
+    REQUIRE(first.blockerListsBuilt == 1);
+    REQUIRE(first.hullTests >= objects - 1);
+    REQUIRE(&fresh.get(fresh.eyeSite(), 0, again) == &built);
+    REQUIRE(again.blockerListsBuilt == 0);
+    REQUIRE(again.hullTests == 0);
+    REQUIRE(fresh.size() == 1);
 }
 
 TEST_CASE("the cache tree flushes the entries beneath a miss", "[cache][tree]") {

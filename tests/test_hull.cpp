@@ -1,6 +1,7 @@
 // The hull of two spheres (blocker cones) and the capsule (cylinder of safety).
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -74,13 +75,28 @@ TEST_CASE("hull distance: a point and a sphere make the eye or light cone", "[hu
     REQUIRE(hullDistance(Vec3(0, 3, 0), inside, s) == Approx(2.0));
 }
 
-TEST_CASE("meetsHull with slack only ever adds spheres", "[hull]") {
-    const Sphere a{Vec3(0, 0, 0), 1.0}, b{Vec3(4, 0, 0), 0.5};
-    const Sphere grazing{Vec3(2, 2.0, 0), 1.2};
-    const double d = hullDistance(grazing.c, a, b);
-    REQUIRE(meetsHull({grazing.c, d}, a, b, 0.0));
-    REQUIRE_FALSE(meetsHull({grazing.c, d - 1e-6}, a, b, 0.0));
-    REQUIRE(meetsHull({grazing.c, d - 1e-12}, a, b, 1e-9));
+TEST_CASE("meetsHull: a sphere meets the hull when its radius reaches it, slack only adds", "[hull]") {
+    // Distances worked out by hand, not by hullDistance
+    auto reaches = [](const Vec3& c, double gap, const Sphere& a, const Sphere& b) {
+        CHECK(meetsHull({c, gap + 1e-9}, a, b, 0.0));
+        CHECK_FALSE(meetsHull({c, gap - 1e-6}, a, b, 0.0));
+        CHECK(meetsHull({c, gap - 1e-12}, a, b, 1e-9));  // within the slack
+        CHECK_FALSE(meetsHull({c, gap - 1e-6}, a, b, 1e-9));
+    };
+    // A capsule of radius 1 from (0,0,0) to (4,0,0): 3 - 1 above its middle, 7 - 4 - 1 past its end
+    const Sphere a{Vec3(0, 0, 0), 1.0}, b{Vec3(4, 0, 0), 1.0};
+    reaches(Vec3(2, 3, 0), 2.0, a, b);
+    reaches(Vec3(7, 0, 0), 2.0, a, b);
+    // The cone from the point (10,0,0) to the sphere of radius 2 at the origin: its side
+    // leaves the axis at asin(2/10), so (5,3,0) lies 3 cos - 5 sin = 3 sqrt(0.96) - 1 from it
+    // (its foot, 5 cos + 3 sin = 5.5 from the apex, falls before the tangent point at sqrt(96))
+    const Sphere big{Vec3(0, 0, 0), 2.0}, apex{Vec3(10, 0, 0), 0.0};
+    reaches(Vec3(5, 3, 0), 3.0 * std::sqrt(0.96) - 1.0, big, apex);
+    reaches(Vec3(5, 3, 0), 3.0 * std::sqrt(0.96) - 1.0, apex, big);
+    // Behind the big sphere the nearest point is on it: 5 - 2
+    reaches(Vec3(-5, 0, 0), 3.0, big, apex);
+    // A sphere inside the hull meets it, whatever its size
+    CHECK(meetsHull({Vec3(5, 0.1, 0), 1e-6}, big, apex, 0.0));
 }
 
 TEST_CASE("capsule containment is the containment of both endpoints", "[cylinder]") {

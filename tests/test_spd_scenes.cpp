@@ -160,7 +160,6 @@ TEST_CASE("closed meshes are watertight: a ray through a shared edge or vertex h
     const Vec3 cubeV[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     const int cubeF[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-    int edgeRays = 0, vertexRays = 0;
     for (int trial = 0; trial < 40; ++trial) {
         const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), 3.0 * u(rng), glm::normalize(Vec3(u(rng), u(rng), u(rng) + 2.0)));
         const Vec3 centre{0.1 * u(rng), 0.3 * u(rng), 0.7 * u(rng)};
@@ -192,15 +191,9 @@ TEST_CASE("closed meshes are watertight: a ray through a shared edge or vertex h
                 const Vec3 a = v[cubeF[f][e]], b = v[cubeF[f][(e + 1) % 4]];
                 const double s = 0.5 + 0.49 * u(rng);
                 check(a + s * (b - a));
-                ++edgeRays;
             }
-        for (int i = 0; i < 8; ++i) {
-            check(v[i]);
-            ++vertexRays;
-        }
+        for (int i = 0; i < 8; ++i) check(v[i]);
     }
-    CHECK(edgeRays == 40 * 24);
-    CHECK(vertexRays == 40 * 8);
 }
 
 TEST_CASE("every scene in scenes/: every cache, order and search gives the same image", "[spd][exact]") {
