@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/median.h"
 #include "cli/commands.h"
 #include "cli/cpu_clock.h"
 #include "render/output_files.h"
@@ -48,11 +49,6 @@ ParallelRun replay(const std::shared_ptr<const Scene>& scene, const RenderOption
     ParallelRun run;
     run.counters = session.counters();
     return run;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 int bench(const BenchArgs& a) {

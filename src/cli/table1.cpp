@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "analysis/beam_tree.h"
+#include "analysis/median.h"
 #include "cli/commands.h"
 #include "cli/cpu_clock.h"
 #include "render/output_files.h"
@@ -27,11 +28,6 @@ const Config kConfigs[] = {{"none", "scanline"}, {"cylinder", "scanline"}, {"blo
 // Hanrahan 1986, Table 1: "Cached" and "Cached, breadth-first" for N = 3, 4, 5
 const std::map<int, std::pair<double, double>> kPaper{{3, {0.53, 0.25}}, {4, {0.29, 0.15}}, {5, {0.20, 0.11}}};
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 }  // namespace
 
 namespace {
