@@ -45,9 +45,12 @@ void CacheTreePanel::refresh(const SessionState* state) {
         item->setText(2, e.origin.object < 0 ? QString("eye") : objectLabel(scene, e.origin.object) + (e.origin.inside ? " (inside)" : ""));
         item->setText(3, e.state == rc::CacheEntry::State::Empty ? QString() : objectLabel(scene, e.object));
         QString holds;
-        if (lists && e.blockerTarget >= 0) {
-            const std::vector<int>* l = lists->find(e.blockerOrigin, e.blockerTarget);
-            holds = QString("blocker list: %1").arg(l ? int(l->size()) : 0);
+        // The list of the entry's pair: its origin and its object (a shadow entry: its light).
+        // On a tiled polygon the lists are kept per tile, and found from the ray (overlays).
+        const int target = node.kind == rc::RayKind::Shadow ? (lists ? lists->lightSite(node.light) : -1) : e.object;
+        if (lists && e.state != rc::CacheEntry::State::Empty && target >= 0) {
+            const std::vector<int>* l = lists->find(lists->originSite(e.origin), target);
+            holds = l ? QString("blocker list: %1").arg(int(l->size())) : QString("blocker list: built when next used");
             if (l && !l->empty()) {
                 QStringList ids;
                 for (std::size_t k = 0; k < l->size() && k < 8; ++k) ids << QString::number((*l)[k]);

@@ -111,21 +111,19 @@ FocusHull hullOf(const SessionState& s, const RayFocus& f) {
     const rc::BlockerLists* lists = s.session().strategy().blockerLists();
     if (!lists) return h;
     h.coneAxis = f.ray.d;
+    // The pair of sites of the ray itself: where it leaves (its tile, on a tiled polygon)
+    // and what it hit (the light, for a shadow ray); the core keeps no copy for display
+    h.origin = f.origin.object >= 0 ? lists->pointSite(f.origin.object, f.ray.o) : lists->eyeSite();
+    h.target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light)
+               : f.hit >= 0                  ? lists->pointSite(f.hit, f.ray.at(f.t))
+                                             : -1;
     if (f.current) {
         const rc::CacheEntry& e = s.session().cacheTree().entry(f.node);
-        if (e.state == rc::CacheEntry::State::Loaded) {
-            h.origin = e.blockerOrigin;
-            h.target = e.blockerTarget;
-            if (e.object < 0 && e.coneAngle >= 0.0) {
-                h.coneAxis = e.coneAxis;
-                h.coneAngle = e.coneAngle;
-            }
+        if (e.state == rc::CacheEntry::State::Loaded && e.object < 0 && e.coneAngle >= 0.0) {
+            h.coneAxis = e.coneAxis;
+            h.coneAngle = e.coneAngle;
         }
     } else {
-        h.origin = f.origin.object >= 0 ? lists->pointSite(f.origin.object, f.ray.o) : lists->eyeSite();
-        h.target = f.kind == rc::RayKind::Shadow ? lists->lightSite(f.light)
-                   : f.hit >= 0                  ? lists->pointSite(f.hit, f.ray.at(f.t))
-                                                 : -1;
         h.coneAngle = emptyConeAround(s.scene(), f);
     }
     // No target (a ray that hit nothing) or no entry yet: there is no hull

@@ -61,9 +61,9 @@ struct FocusHull {
     bool valid() const { return origin >= 0 && target >= 0; }
 };
 
-/// The hull the overlays and the scene view draw for `f`: the active entry's when `f` is
-/// the ray being traced, else the one the blocker cache would key for it. Empty without
-/// blocker lists.
+/// The hull the overlays and the scene view draw for `f`: the pair of sites the blocker
+/// cache keys for the ray (its origin's, and its hit's or light's), with the active entry's
+/// empty cone when `f` is the ray being traced. Empty without blocker lists.
 FocusHull hullOf(const SessionState& s, const RayFocus& f);
 
 /// The cylinder of safety drawn for `f`: the active entry's (`cached`) when it has one,

@@ -76,7 +76,6 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Count
     // Then only the potential blockers between origin and target can come first
     Answer best{e.object, t};
     testBlockers(q, list, best, n);
-    e.blockerTarget = target;
     if (best.object != e.object) return {true, best, Decision::Miss, MissReason::BlockerHit};
     return {true, best, Decision::Hit};
     // [blocker-probe]
@@ -162,13 +161,7 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
     e.cylinder.radius = -1.0;
     e.coneAngle = -1.0;
     e.pending = false;
-    e.blockerOrigin = lists_.originSite(q);
-    if (q.kind == RayKind::Shadow) {
-        e.blockerTarget = lists_.lightSite(q.light);
-    } else if (a.object >= 0) {
-        e.blockerTarget = lists_.pointSite(a.object, q.ray.at(a.t));  // its list is built when next used
-    } else {
-        e.blockerTarget = -1;
+    if (q.kind != RayKind::Shadow && a.object < 0) {
         e.coneAxis = q.ray.d;
         keepSegment(q, a, e);
     }

@@ -30,8 +30,6 @@ struct CacheEntry {
     double coneCos = 2.0;      ///< cos(coneAngle), for the test without trigonometry
     double coneSin = 0.0;      ///< sin(coneAngle)
     bool pending = false;      ///< cylinder or cone not built yet: built when the entry is next used
-    int blockerOrigin = -1;    ///< the site pair of the blocker list in use (for display)
-    int blockerTarget = -1;
 };
 
 /// How the samples of distributed ray tracing (pixel samples, shadow-ray samples, glossy
