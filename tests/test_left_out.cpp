@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/left_out.h"
+#include "render/left_out.h"
 #include "render/render_session.h"
 #include "render/report.h"
 #include "search/blocker_lists.h"

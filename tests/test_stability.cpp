@@ -18,10 +18,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "analysis/image_error.h"
-#include "analysis/precise_intersection.h"
-#include "analysis/stability.h"
-#include "analysis/stiff_scenes.h"
+#include "study/image_error.h"
+#include "study/precise_intersection.h"
+#include "study/stability.h"
+#include "study/stiff_scenes.h"
 #include "render/render_session.h"
 #include "search/blocker_cache.h"
 #include "search/complete_search.h"

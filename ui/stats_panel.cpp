@@ -1,6 +1,6 @@
 #include "stats_panel.h"
 
-#include "analysis/left_out.h"
+#include "render/left_out.h"
 
 #include <QChart>
 #include <QChartView>

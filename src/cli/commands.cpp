@@ -15,7 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "analysis/beam_tree.h"
-#include "analysis/left_out.h"
+#include "render/left_out.h"
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "render/report.h"

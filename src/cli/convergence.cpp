@@ -11,7 +11,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "analysis/image_error.h"
+#include "study/image_error.h"
 #include "render/parallel_render.h"
 #include "cli/commands.h"
 #include "cli/cpu_clock.h"

@@ -6,9 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/precise_intersection.h"
-#include "analysis/stability.h"
-#include "analysis/stiff_scenes.h"
+#include "study/precise_intersection.h"
+#include "study/stability.h"
+#include "study/stiff_scenes.h"
 #include "cli/commands.h"
 #include "render/output_files.h"
 

@@ -1,6 +1,6 @@
 #include "render/report.h"
 
-#include "analysis/left_out.h"
+#include "render/left_out.h"
 
 namespace rc {
 

@@ -17,7 +17,7 @@ struct RenderSummary {
     std::int64_t regions = 0;
     int paths = 0;  ///< ray-tree paths met
     int threads = 1;
-    std::vector<std::string> leftOut;  ///< what the scene did not need (analysis/left_out.h)
+    std::vector<std::string> leftOut;  ///< what the scene did not need (render/left_out.h)
 };
 
 /// The summary of one session.

@@ -1,4 +1,4 @@
-#include "analysis/stiff_scenes.h"
+#include "study/stiff_scenes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "analysis/image_error.h"
+#include "study/image_error.h"
 
 #include <algorithm>
 #include <chrono>

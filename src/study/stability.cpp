@@ -1,4 +1,4 @@
-#include "analysis/stability.h"
+#include "study/stability.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "analysis/precise_intersection.h"
+#include "study/precise_intersection.h"
 
 namespace rc {
 

@@ -1,4 +1,4 @@
-#include "analysis/left_out.h"
+#include "render/left_out.h"
 
 namespace rc {
 

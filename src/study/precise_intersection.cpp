@@ -1,4 +1,4 @@
-#include "analysis/precise_intersection.h"
+#include "study/precise_intersection.h"
 
 #include <algorithm>
 #include <chrono>

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/stiff_scenes.h"
+#include "study/stiff_scenes.h"
 #include "render/render_session.h"
 
 namespace rc {
