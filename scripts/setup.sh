@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Install what RayCache needs from Debian bookworm, idempotently: a no-op when all is there.
-# Usage: scripts/setup.sh [--with-browser]   (run as root, or with sudo available)
+# Usage: scripts/setup.sh [--with-browser] [--with-valgrind]   (run as root, or with sudo available)
+# --with-browser: chromium, to look at the docs headless; --with-valgrind: for tests/ui/valgrind_gui.sh
 set -euo pipefail
 
 packages=(
@@ -11,7 +12,13 @@ packages=(
   clang libclang-rt-14-dev libembree-dev
   xvfb xauth python3-matplotlib
 )
-if [[ "${1:-}" == "--with-browser" ]]; then packages+=(chromium); fi
+for option in "$@"; do
+  case "$option" in
+    --with-browser) packages+=(chromium) ;;
+    --with-valgrind) packages+=(valgrind) ;;
+    *) echo "setup: unknown option $option" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

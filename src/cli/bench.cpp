@@ -11,7 +11,7 @@
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "scene/builtin_scenes.h"
-#include "search/answer_table.h"
+#include "render/answer_replay.h"
 #include "search/embree_search.h"
 
 namespace rc::cli {
@@ -32,15 +32,6 @@ struct Config {
     OrderKind order;
     bool replay = false;  ///< no search: answers from a table (what a render costs besides)
 };
-
-/// The answers an uncached linear render of `o` gets, in the order it asks for them.
-AnswerTable recordAnswers(const std::shared_ptr<const Scene>& scene, RenderOptions o) {
-    AnswerTable table;
-    o.cache = CacheKind::None;
-    RenderSession session(scene, o, std::make_unique<RecordingSearch>(*scene, makeCompleteSearch(o.accel, *scene), table));
-    session.run();
-    return table;
-}
 
 /// One render of `o` answered from `table`, on one thread, as renderParallel would count it.
 ParallelRun replay(const std::shared_ptr<const Scene>& scene, const RenderOptions& o, const AnswerTable& table) {

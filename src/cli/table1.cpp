@@ -12,8 +12,7 @@
 #include "cli/cpu_clock.h"
 #include "render/output_files.h"
 #include "scene/builtin_scenes.h"
-#include "search/accelerator.h"
-#include "search/answer_table.h"
+#include "render/answer_replay.h"
 
 namespace rc::cli {
 
@@ -70,9 +69,7 @@ int table1(const Table1Args& a) {
         for (int k = 0; k < 2; ++k) {
             flags.cache = "none";
             flags.order = k == 0 ? "scanline" : "bfs";
-            const RenderOptions o = flags.options();
-            RenderSession session(scene, o, std::make_unique<RecordingSearch>(*scene, makeCompleteSearch(o.accel, *scene), tables[k]));
-            session.run();
+            tables[k] = recordAnswers(scene, flags.options());
         }
         for (int r = 0; r < repeat_; ++r) {
             for (int k = 0; k < 2; ++k) {

@@ -11,6 +11,8 @@
 # the report went away with QT_ENABLE_REGEXP_JIT=0). The menu now filters by suffix, and
 # these runs need no suppression and no setting.
 set -euo pipefail
+# valgrind is not among the packages CI needs: install it here (a no-op when present)
+bash "$(dirname "$0")/../../scripts/setup.sh" --with-valgrind
 BUILD=${1:-build}
 GUI="$BUILD/ui/raycache-gui"
 OUT=$(mktemp -d)
