@@ -50,25 +50,13 @@ public:
 
     /// The least distance from segment a-b (ab = b - a, invLen2 = 1 / |ab|^2, 0 for a
     /// point) to the bounding spheres of objects [begin, end), `skip` and `skipToo` left out,
-    /// lowered into `clearance`. Squared distances are compared; a root is taken only for
-    /// a sphere nearer than any so far. (How a cylinder of safety is built by a scan.)
+    /// lowered into `clearance`. (How a cylinder of safety is built by a scan.)
     void clearance(const Vec3& a, const Vec3& ab, double invLen2, int skip, int skipToo, std::size_t begin,
-                   std::size_t end, double& clearance) const {
-        // [segment-clearance]
-        for (std::size_t i = begin; i < end; ++i) {
-            const double px = x_[i] - a.x, py = y_[i] - a.y, pz = z_[i] - a.z;
-            const double t = std::clamp((px * ab.x + py * ab.y + pz * ab.z) * invLen2, 0.0, 1.0);
-            const double qx = px - t * ab.x, qy = py - t * ab.y, qz = pz - t * ab.z;
-            const double reach = clearance + bound_[i];
-            if (!(reach > 0.0) || qx * qx + qy * qy + qz * qz >= reach * reach) continue;
-            if (ids_[i] == skip || ids_[i] == skipToo) continue;
-            clearance = std::sqrt(qx * qx + qy * qy + qz * qz) - bound_[i];
-        }
-        // [segment-clearance]
-    }
+                   std::size_t end, double& clearance) const;
 
 private:
     std::vector<int> ids_;
+    std::vector<double> idValues_;  ///< ids_ as doubles, compared beside the distances
     std::vector<double> x_, y_, z_;
     std::vector<double> radius2_;  ///< r * r; negative for a polygon or a cone
     std::vector<double> bound_;    ///< the bounding sphere's radius
