@@ -58,7 +58,7 @@ TEST_CASE("bvh and linear scan agree on random rays, ties included", "[bvh][exac
 
 TEST_CASE("bvh culls exactly the objects a scan over all of them finds", "[bvh][cull]") {
     const Scene scene = testing::randomScene(Layout::Overlapping, 7, 120);
-    const LinearSearch linear(scene);
+    const LinearSearch linear(scene, LinearSearch::Regions::Scan);
     const BoundingVolumeHierarchy bvh(scene);
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-6.0, 6.0);
@@ -79,6 +79,35 @@ TEST_CASE("bvh culls exactly the objects a scan over all of them finds", "[bvh][
         REQUIRE(tree.limit == scan.limit);
     }
     REQUIRE(nonEmpty > 100);
+}
+
+TEST_CASE("the linear search culls through its hierarchy exactly as by a scan", "[bvh][cull][cylinder]") {
+    // Rays are scanned, but a cache's region queries (hulls, cylinders of safety) go
+    // through the hierarchy: the same objects, the same radius, fewer objects measured
+    for (Layout layout : {Layout::Overlapping, Layout::Polygons}) {
+        const Scene scene = testing::randomScene(layout, 5, 150);
+        const LinearSearch tree(scene), scan(scene, LinearSearch::Regions::Scan);
+        std::mt19937_64 rng(17);
+        std::uniform_real_distribution<double> u(-6.0, 6.0);
+        int cut = 0;
+        for (int i = 0; i < 300; ++i) {
+            const Sphere from{{u(rng), u(rng), u(rng)}, std::abs(u(rng)) / 6.0};
+            const Sphere to{{u(rng), u(rng), u(rng)}, std::abs(u(rng)) / 4.0};
+            HullQuery byScan(from, to), byTree(from, to);
+            scan.cull(byScan);
+            tree.cull(byTree);
+            std::sort(byTree.ids.begin(), byTree.ids.end());
+            REQUIRE(byTree.ids == byScan.ids);
+            const int skip = i % scene.size(), skipToo = (7 * i) % scene.size();
+            const double radius = scan.clearance(from.c, to.c, skip, skipToo, kNoHit);
+            REQUIRE(tree.clearance(from.c, to.c, skip, skipToo, kNoHit) == radius);
+            REQUIRE(tree.clearance(from.c, to.c, skip, skipToo, 0.25) == std::min(radius, 0.25));
+            cut += radius < 0.0;
+        }
+        // Segments both clear of every object and inside some
+        REQUIRE(cut > 10);
+        REQUIRE(cut < 290);
+    }
 }
 
 TEST_CASE("every cache in front of the bvh gives the linear image", "[bvh][exact][image]") {

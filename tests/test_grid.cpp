@@ -138,7 +138,7 @@ TEST_CASE("a flat scene and tiny spheres in a huge box stay exact", "[grid][memo
 
 TEST_CASE("grid culls find exactly what a scan over every object finds", "[grid][cull]") {
     const Scene scene = testing::randomScene(Layout::Overlapping, 9, 150);
-    const LinearSearch linear(scene);
+    const LinearSearch linear(scene, LinearSearch::Regions::Scan);
     const UniformGrid grid(scene);
     std::mt19937_64 rng(8);
     std::uniform_real_distribution<double> u(-6.0, 6.0);

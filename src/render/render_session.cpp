@@ -28,7 +28,7 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
       options_(resolved(*scene_, options)),
       camera_(scene_->camera, options_.width, options_.height),
       search_(search ? std::move(search) : makeCompleteSearch(options_.accel, *scene_)),
-      verifier_(*scene_),
+      verifier_(*scene_, LinearSearch::Regions::Scan),
       strategy_(makeStrategy(options_.cache, *scene_, *search_)),
       paths_(options_.sampleEntries),
       image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {

@@ -1,5 +1,7 @@
 #include "search/complete_search.h"
 
+#include "search/bounding_volume_hierarchy.h"
+
 #include <algorithm>
 
 #include <glm/common.hpp>
@@ -43,7 +45,16 @@ double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int ski
     return c.limit;
 }
 
+void LinearSearch::cull(SphereCull& c) const {
+    if (regions_) {
+        regions_->cull(c);
+    } else {
+        CompleteSearch::cull(c);
+    }
+}
+
 double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
+    if (regions_) return CompleteSearch::clearance(a, b, skip, skipToo, cap);
     const Vec3 ab = b - a;
     const double len2 = glm::dot(ab, ab);
     double c = cap;
@@ -51,9 +62,12 @@ double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipT
     return c;
 }
 
-LinearSearch::LinearSearch(const Scene& scene) : CompleteSearch(scene) {
+LinearSearch::LinearSearch(const Scene& scene, Regions regions) : CompleteSearch(scene) {
     for (int id = 0; id < scene.size(); ++id) all_.add(scene, id);
+    if (regions == Regions::Hierarchy) regions_ = std::make_unique<const BoundingVolumeHierarchy>(scene);
 }
+
+LinearSearch::~LinearSearch() = default;
 
 Answer LinearSearch::nearest(const Query& q, Counters& n) const {
     // [linear-search]
