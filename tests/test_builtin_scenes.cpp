@@ -62,11 +62,17 @@ int nearestSphere(const Scene& s, const Ray& ray, double& tHit) {
 
 TEST_CASE("builtinScenes lists every generator with a description", "[builtin]") {
     const auto list = builtinScenes();
-    REQUIRE(list.size() == 5);
+    REQUIRE(list.size() == 6);
     CHECK(list[0].name == "cube:N");
+    CHECK(list[1].name == "balls:N");
     for (const BuiltinInfo& b : list) {
         CHECK_FALSE(b.description.empty());
-        const std::string spec = b.name == "cube:N" ? "cube:2" : b.name;
+        // A sized scene suggests sizes, and every one of them builds
+        const bool sized = b.name.size() > 2 && b.name.substr(b.name.size() - 2) == ":N";
+        CHECK(sized == !b.sizes.empty());
+        for (int n : b.sizes)
+            CHECK_NOTHROW(makeBuiltin(b.name.substr(0, b.name.size() - 1) + std::to_string(n)));
+        const std::string spec = sized ? b.name.substr(0, b.name.size() - 1) + "2" : b.name;
         const Scene s = makeBuiltin(spec);
         CHECK(s.name == spec);
         CHECK(s.size() > 0);
@@ -180,7 +186,7 @@ TEST_CASE("cube:N is the same on every machine", "[builtin]") {
 
 TEST_CASE("unknown names and bad sizes throw with a clear message", "[builtin]") {
     CHECK(errorMessage("nope").find("unknown scene 'nope'") != std::string::npos);
-    CHECK(errorMessage("nope").find("cube:N, glass, fill, pair") != std::string::npos);
+    CHECK(errorMessage("nope").find("cube:N, balls:N, glass, fill, pair") != std::string::npos);
     CHECK(errorMessage("").find("unknown scene") != std::string::npos);
     for (const char* bad : {"cube", "cube:", "cube:0", "cube:65", "cube:-1", "cube:abc", "cube:4x",
                             "cube: 4", "cube:99999999999999999999"}) {

@@ -79,7 +79,8 @@ TEST_CASE("a malformed scene exits 2 naming file and line", "[cli]") {
 
 TEST_CASE("bad flags and values exit 2 with a message", "[cli]") {
     for (const char* args : {"render cube:3 --cache bogus", "render cube:3 --width 0", "render cube:3 --order sideways",
-                             "render cube:99999", "render", "frobnicate", "render cube:3 --depth x"}) {
+                             "render cube:99999", "render balls:7", "render balls:0", "render", "frobnicate",
+                             "render cube:3 --depth x"}) {
         const Result r = run(args);
         INFO(args << "\n" << r.output);
         REQUIRE(r.code == 2);
@@ -91,6 +92,7 @@ TEST_CASE("scenes and info describe the built-ins", "[cli]") {
     const Result scenes = run("scenes");
     REQUIRE(scenes.code == 0);
     REQUIRE(scenes.output.find("cube:N") != std::string::npos);
+    REQUIRE(scenes.output.find("balls:N") != std::string::npos);
     const Result info = run("info cube:3");
     REQUIRE(info.code == 0);
     REQUIRE(info.output.find("spheres    27") != std::string::npos);

@@ -311,12 +311,13 @@ void MainWindow::buildToolbars() {
     QToolBar* render = addToolBar("Render");
     render->setObjectName("render");
     sceneBox_ = new QComboBox(this);
-    // Built-ins (cube:N in a few sizes), then every scene of the project's scenes/ folder
+    // Built-ins (cube:N and balls:N in the sizes the core suggests), then every scene of the
+    // project's scenes/ folder
     for (const rc::BuiltinInfo& b : rc::builtinScenes()) {
         const QString name = QString::fromStdString(b.name);
         QStringList specs;
         if (name.contains(":N"))
-            for (int n : {2, 3, 4, 5, 6, 8}) specs << QString(name).replace(":N", QString(":%1").arg(n));
+            for (int n : b.sizes) specs << QString(name).replace(":N", QString(":%1").arg(n));
         else
             specs << name;
         for (const QString& spec : specs) {

@@ -10,6 +10,7 @@
 
 #include "scene/nff_reader.h"
 #include "scene/random.h"
+#include "scene/sphereflake.h"
 
 namespace rc {
 
@@ -185,6 +186,21 @@ Scene makeTrio() {
     return s;
 }
 
+/// The N of `prefix:N` (a whole number from 1 to `max`, nothing around it).
+/// \throws SceneError naming `what` and giving `usage`
+int sizeOf(const std::string& spec, const std::string& prefix, int max, const char* what,
+           const std::string& usage) {
+    const std::string digits = spec.substr(prefix.size());
+    int n = 0;
+    const char* first = digits.data();
+    const char* last = first + digits.size();
+    const auto [ptr, ec] = std::from_chars(first, last, n);
+    if (digits.empty() || digits[0] < '0' || digits[0] > '9' || ec != std::errc() || ptr != last || n < 1 ||
+        n > max)
+        throw SceneError(spec, 0, 0, std::string("bad ") + what + " size '" + digits + "': " + usage);
+    return n;
+}
+
 bool endsWithNff(const std::string& s) {
     if (s.size() < 4) return false;
     const std::string tail = s.substr(s.size() - 4);
@@ -195,11 +211,16 @@ bool endsWithNff(const std::string& s) {
 
 std::vector<BuiltinInfo> builtinScenes() {
     return {
-        {"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), the paper's Table 1 scene"},
-        {"glass", "refracting glass spheres in front of and among opaque ones, on a ground square"},
-        {"fill", "one diffuse sphere filling the 64x64 view, lit from the eye: coherence 1"},
-        {"pair", "a big mirror sphere reflecting a small one, the paper's Figure 2"},
-        {"trio", "the pair with a third sphere in the hull between them: Figure 2's potential blocker"},
+        {"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), the paper's Table 1 scene",
+         {2, 3, 4, 5, 6, 8}},
+        {"balls:N",
+         "SPD's sphereflake of size N (1 <= N <= " + std::to_string(kMaxSphereflake) +
+             "): 1 + 9 + ... + 9^N mirrored spheres on a ground square; SPD's default is balls:4",
+         {1, 2, 3, 4, 5}},
+        {"glass", "refracting glass spheres in front of and among opaque ones, on a ground square", {}},
+        {"fill", "one diffuse sphere filling the 64x64 view, lit from the eye: coherence 1", {}},
+        {"pair", "a big mirror sphere reflecting a small one, the paper's Figure 2", {}},
+        {"trio", "the pair with a third sphere in the hull between them: Figure 2's potential blocker", {}},
     };
 }
 
@@ -210,16 +231,15 @@ Scene makeBuiltin(const std::string& spec, std::uint64_t seed) {
     if (spec == "trio") return makeTrio();
     const std::string usage = "expected cube:N with N a whole number from 1 to " + std::to_string(kMaxCube);
     if (spec == "cube" || spec == "cube:") throw SceneError(spec, 0, 0, "the cube scene needs a size: " + usage);
-    if (spec.rfind("cube:", 0) == 0) {
-        const std::string digits = spec.substr(5);
-        int n = 0;
-        const char* first = digits.data();
-        const char* last = first + digits.size();
-        const auto [ptr, ec] = std::from_chars(first, last, n);
-        if (digits[0] < '0' || digits[0] > '9' || ec != std::errc() || ptr != last || n < 1 || n > kMaxCube)
-            throw SceneError(spec, 0, 0, "bad cube size '" + digits + "': " + usage);
-        return makeCube(n, seed);
-    }
+    if (spec.rfind("cube:", 0) == 0) return makeCube(sizeOf(spec, "cube:", kMaxCube, "cube", usage), seed);
+    const std::string ballsUsage =
+        "expected balls:N with N a whole number from 1 to " + std::to_string(kMaxSphereflake) +
+        " (balls:" + std::to_string(kMaxSphereflake) + " has " +
+        std::to_string(sphereflakeSpheres(kMaxSphereflake)) + " spheres)";
+    if (spec == "balls" || spec == "balls:")
+        throw SceneError(spec, 0, 0, "the balls scene needs a size: " + ballsUsage);
+    if (spec.rfind("balls:", 0) == 0)
+        return makeSphereflake(sizeOf(spec, "balls:", kMaxSphereflake, "balls", ballsUsage));
     std::string names;
     for (const BuiltinInfo& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;
     throw SceneError(spec, 0, 0, "unknown scene '" + spec + "': not a file, and not a built-in scene (" +

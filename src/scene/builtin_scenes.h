@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// \brief Built-in scene generators (`cube:N`, `glass`, `fill`, `pair`, `trio`) and loadScene().
+/// \brief Built-in scene generators (`cube:N`, `balls:N`, `glass`, `fill`, `pair`, `trio`) and
+/// loadScene().
 ///
 /// The generators are deterministic across machines and compilers: random numbers come
 /// from std::mt19937_64 and are turned into doubles by hand, never through the
@@ -18,6 +19,8 @@ namespace rc {
 struct BuiltinInfo {
     std::string name;
     std::string description;
+    /// For a name ending in ":N": a few sizes worth offering in a menu, smallest first.
+    std::vector<int> sizes;
 };
 
 /// Every built-in scene, in the order `raycache scenes` lists them.
@@ -26,6 +29,9 @@ std::vector<BuiltinInfo> builtinScenes();
 /// Builds the built-in scene named by `spec`:
 /// - `cube:N` (1 <= N <= 64): the paper's Table 1 scene, N^3 jittered reflective spheres
 ///   on a lattice, seen from a corner so that the cube fills the view; 512x512.
+/// - `balls:N` (1 <= N <= kMaxSphereflake): SPD's sphereflake of size N, as
+///   `balls -s N -c -r 0` prints it (makeSphereflake()); 1 + 9 + ... + 9^N spheres
+///   (SPD's default size 4: 7,381) on a ground square; 512x512. Does not depend on `seed`.
 /// - `glass`: refracting spheres in front of and among opaque ones on a ground square,
 ///   with a few seed-placed marbles; 512x512.
 /// - `fill`: one diffuse sphere that every eye ray hits, lit from next to the eye, so

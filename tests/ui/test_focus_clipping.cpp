@@ -21,6 +21,7 @@
 #include "ray_focus.h"
 #include "ray_tree_panel.h"
 #include "scene/builtin_scenes.h"
+#include "scene/sphereflake.h"
 #include "screenshot.h"
 
 using namespace rcgui;
@@ -363,10 +364,14 @@ TEST_CASE("With no arguments the window opens on a partly traced image with a hi
     REQUIRE_FALSE(blockers->empty());
 }
 
-TEST_CASE("The Scene menu lists cube:N sizes and every scene in scenes/", "[gui][scene]") {
+TEST_CASE("The Scene menu lists cube:N and balls:N sizes and every scene in scenes/", "[gui][scene]") {
     MainWindow w;
     const QStringList choices = w.sceneChoices();
-    for (const char* c : {"cube:2", "cube:4", "cube:8", "pair", "glass"}) REQUIRE(choices.contains(c));
+    for (const char* c : {"cube:2", "cube:4", "cube:8", "balls:1", "balls:4", "pair", "glass"})
+        REQUIRE(choices.contains(c));
+    // Each :N scene offers its own sizes: none beyond balls:N's limit
+    for (const QString& c : choices)
+        if (c.startsWith("balls:")) REQUIRE(c.mid(6).toInt() <= rc::kMaxSphereflake);
     const QStringList files = QDir(RAYCACHE_SCENES_DIR).entryList({"*.nff"}, QDir::Files);
     REQUIRE(files.size() >= 5);
     for (const QString& file : files) REQUIRE(choices.contains(file));
