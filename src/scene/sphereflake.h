@@ -23,9 +23,10 @@ long sphereflakeSpheres(int size);
 /// The scene is the one the NFF reader makes of SPD's output, bit for bit: every sphere
 /// is computed with SPD's own sequence of double-precision operations (which matters
 /// where a child points straight down and the rotation's axis is made of rounding
-/// noise), then every number is rounded to the six significant digits that SPD's `%g`
-/// prints. Spheres come in SPD's order (depth first). Scene::name is "balls:<size>".
-/// \throws SceneError("balls:<size>", 0, 0, message) for a size out of range.
+/// noise), then every number is rounded to the six significant digits that SPD prints
+/// (C's `g` format). Spheres come in SPD's order (depth first). Scene::name is `balls:N`
+/// for size N.
+/// \throws SceneError(`balls:N`, 0, 0, message) for a size N out of range.
 Scene makeSphereflake(int size);
 
 }  // namespace rc
