@@ -68,8 +68,8 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption width("width", "image width (default: the scene's)", "W");
     const QCommandLineOption height("height", "image height (default: the scene's)", "H");
     const QCommandLineOption steps("steps", "rays to trace before showing (screenshots: default 20000)", "N");
-    const QCommandLineOption overlays("overlays", "cylinder,cone,frontier,misses (or all, none, grid)", "list");
-    const QCommandLineOption heatmap("heatmap", "none | tests | hitmiss | order | beam", "mode");
+    const QCommandLineOption overlays("overlays", "cylinder,cone,frontier,misses,samples (or all, none, grid)", "list");
+    const QCommandLineOption heatmap("heatmap", "none | tests | hitmiss | hitrate | order | beam", "mode");
     const QCommandLineOption screenshot("screenshot", "write the window to this PNG and exit", "file");
     const QCommandLineOption window("window", "window size of screenshots (default 1600x1000)", "WxH");
     const QCommandLineOption select("select", "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray)", "x,y[:path]");
@@ -138,12 +138,12 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     }
     if (p.isSet(overlays)) {
         const auto o = Overlays::parse(p.value(overlays));
-        if (!o) { message = "--overlays takes a comma-separated list of cylinder, cone, frontier, misses, grid, all, none"; return ParseResult::Error; }
+        if (!o) { message = "--overlays takes a comma-separated list of cylinder, cone, frontier, misses, samples, grid, all, none"; return ParseResult::Error; }
         out.overlays = *o;
     }
     if (p.isSet(heatmap)) {
         const auto h = parseHeatmap(p.value(heatmap));
-        if (!h) { message = "--heatmap must be none, tests, hitmiss, order or beam"; return ParseResult::Error; }
+        if (!h) { message = "--heatmap must be none, tests, hitmiss, hitrate, order or beam"; return ParseResult::Error; }
         out.heatmap = *h;
     }
     if (p.isSet(screenshot)) out.screenshot = p.value(screenshot);

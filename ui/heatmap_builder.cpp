@@ -10,11 +10,18 @@ namespace rcgui {
 
 double HeatmapBuilder::scaleOf(const SessionState& s, Heatmap mode) {
     if (mode == Heatmap::VisitOrder) return std::max<double>(1.0, double(s.session().steps()));
+    if (mode == Heatmap::HitRate) return 1.0;
     if (mode != Heatmap::Tests) return 0.0;
     std::int32_t most = 1;
     const int n = s.width() * s.height();
     for (int px = 0; px < n; ++px) most = std::max(most, s.recorder().testsAt(px));
     return double(most);
+}
+
+std::optional<double> HeatmapBuilder::hitRate(const SessionState& s, int px) {
+    const double hits = s.recorder().hitsAt(px), misses = s.recorder().missesAt(px);
+    if (hits + misses == 0) return std::nullopt;
+    return hits / (hits + misses);
 }
 
 QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path, double top) {
@@ -40,11 +47,20 @@ QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path, doub
                 if (rec.firstVisit(px) < 0) continue;
                 const double hits = rec.hitsAt(px), misses = rec.missesAt(px);
                 if (hits + misses == 0) {
-                    set(px, QColor(110, 110, 110));  // no cache: every ray searched
+                    set(px, palette::kNoLookups);  // no cache: every ray searched
                     continue;
                 }
                 const double f = misses / (hits + misses);
                 set(px, QColor(int(40 + 215 * f), int(200 * (1 - f) + 30), 40));
+            }
+            break;
+        }
+        case Heatmap::HitRate: {
+            // One fixed scale, 0 to 1: two renders side by side always share it
+            for (int px = 0; px < n; ++px) {
+                if (rec.firstVisit(px) < 0) continue;
+                const std::optional<double> rate = hitRate(s, px);
+                set(px, rate ? palette::ramp(*rate) : palette::kNoLookups);
             }
             break;
         }

@@ -1,6 +1,8 @@
 #pragma once
 /// \file
 /// \brief Turns per-pixel tallies of a render into a false-colour picture.
+#include <optional>
+
 #include <QImage>
 
 #include "overlay_options.h"
@@ -18,8 +20,11 @@ public:
     /// compared side by side share one `top`, so equal colours mean equal values.
     static QImage build(const SessionState& s, Heatmap mode, int path = 0, double top = 0.0);
     /// The state's own top of the scale for `mode`: its most tests in one pixel, or its
-    /// step count (at least 1); 0 for pictures without a scale.
+    /// step count (at least 1), or 1 for the hit rate; 0 for pictures without a scale.
     static double scaleOf(const SessionState& s, Heatmap mode);
+    /// The cache hit rate of pixel `px`: hits / (hits + misses) over the lookups of every
+    /// ray of the pixel, all samples; nothing when it made none (no cache, or untraced).
+    static std::optional<double> hitRate(const SessionState& s, int px);
 };
 
 }  // namespace rcgui

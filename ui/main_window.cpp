@@ -149,6 +149,10 @@ QString pixelTooltip(const SessionState* s, int x, int y) {
                     .arg(rec.firstVisit(px));
     if (rec.missReasonAt(px) != rc::MissReason::None)
         t += QString(", first miss: %1").arg(QString::fromUtf8(rc::toString(rec.missReasonAt(px)).data()));
+    const std::optional<double> rate = HeatmapBuilder::hitRate(*s, px);
+    t += rate ? QString(", hit rate %1% (%2 of %3 lookups)")
+                    .arg(100.0 * *rate, 0, 'f', 1).arg(rec.hitsAt(px)).arg(rec.hitsAt(px) + rec.missesAt(px))
+              : QString(", hit rate: no cache lookups");
     return t;
 }
 
@@ -301,8 +305,9 @@ void MainWindow::viewsChanged() {
     view_->update();
     if (compareChoice_) compareView_->update();
     if (!sceneView_->isHidden()) {
-        sceneView_->setLayers(overlays_.cylinder, overlays_.hull);
-        if (const SessionState* s = controller_.state()) sceneView_->setSketch(SceneSketch::of(*s, selection_));
+        sceneView_->setLayers(overlays_.cylinder, overlays_.hull, overlays_.samples);
+        if (const SessionState* s = controller_.state())
+            sceneView_->setSketch(SceneSketch::of(*s, selection_, overlays_.samples));
     }
 }
 
@@ -453,6 +458,9 @@ void MainWindow::buildToolbars() {
     hullBox_ = box("Hull", "Blocker hull of origin and target, its blockers (orange) and target (green)", &Overlays::hull);
     frontierBox_ = box("Frontier", "Breadth-first queue, deferred seeds and regions", &Overlays::frontier);
     missesBox_ = box("Misses", "Where misses happened, coloured by reason", &Overlays::misses);
+    samplesBox_ = box("Samples", "The sample rays of the pixel in focus: its eye samples, the shadow rays of each hit "
+                                 "fanning to the light's sphere (reaching it or blocked), its glossy reflections",
+                      &Overlays::samples);
     gridBox_ = box("Grid", "Pixel grid at high zoom", &Overlays::grid);
     legendBox_ = box("Legend", "The colour key (beside the image when there is room)", &Overlays::legend);
     const QList<QAction*> shown = show->actions();
@@ -464,6 +472,7 @@ void MainWindow::buildToolbars() {
     heatmapBox_->addItem("image", int(Heatmap::None));
     heatmapBox_->addItem("tests per pixel", int(Heatmap::Tests));
     heatmapBox_->addItem("hits / misses", int(Heatmap::HitMiss));
+    heatmapBox_->addItem("cache hit rate", int(Heatmap::HitRate));
     heatmapBox_->addItem("visiting order", int(Heatmap::VisitOrder));
     heatmapBox_->addItem("beam-tree node", int(Heatmap::BeamNode));
     show->addWidget(new QLabel(" Show ", this));
@@ -655,7 +664,9 @@ void MainWindow::setOverlays(const Overlays& o) {
     const double lineScale = overlays_.lineScale;
     overlays_ = o;
     overlays_.lineScale = lineScale;
-    const QSignalBlocker b1(cylinderBox_), b2(hullBox_), b3(frontierBox_), b4(missesBox_), b5(gridBox_), b6(legendBox_);
+    const QSignalBlocker b1(cylinderBox_), b2(hullBox_), b3(frontierBox_), b4(missesBox_), b5(gridBox_), b6(legendBox_),
+        b7(samplesBox_);
+    samplesBox_->setChecked(o.samples);
     legendBox_->setChecked(o.legend);
     cylinderBox_->setChecked(o.cylinder);
     hullBox_->setChecked(o.hull);

@@ -177,7 +177,7 @@ private:
     QComboBox *sceneBox_ = nullptr, *cacheBox_ = nullptr, *orderBox_ = nullptr, *sizeBox_ = nullptr, *accelBox_ = nullptr,
               *heatmapBox_ = nullptr;
     QCheckBox *cylinderBox_ = nullptr, *hullBox_ = nullptr, *frontierBox_ = nullptr, *missesBox_ = nullptr,
-              *gridBox_ = nullptr, *legendBox_ = nullptr;
+              *gridBox_ = nullptr, *legendBox_ = nullptr, *samplesBox_ = nullptr;
     QAction *presentAct_ = nullptr, *largeAct_ = nullptr;
     /// The toolbar actions of the overlay boxes: hidden when the session cannot use them
     QAction *cylinderAct_ = nullptr, *hullAct_ = nullptr, *frontierAct_ = nullptr, *missesAct_ = nullptr;

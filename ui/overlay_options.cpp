@@ -7,6 +7,7 @@ QString toString(Heatmap h) {
         case Heatmap::None: return "none";
         case Heatmap::Tests: return "tests";
         case Heatmap::HitMiss: return "hitmiss";
+        case Heatmap::HitRate: return "hitrate";
         case Heatmap::VisitOrder: return "order";
         case Heatmap::BeamNode: return "beam";
     }
@@ -14,7 +15,7 @@ QString toString(Heatmap h) {
 }
 
 std::optional<Heatmap> parseHeatmap(const QString& s) {
-    for (Heatmap h : {Heatmap::None, Heatmap::Tests, Heatmap::HitMiss, Heatmap::VisitOrder, Heatmap::BeamNode})
+    for (Heatmap h : {Heatmap::None, Heatmap::Tests, Heatmap::HitMiss, Heatmap::HitRate, Heatmap::VisitOrder, Heatmap::BeamNode})
         if (toString(h) == s.trimmed().toLower()) return h;
     return std::nullopt;
 }
@@ -27,9 +28,10 @@ std::optional<Overlays> Overlays::parse(const QString& list) {
         else if (w == "cone" || w == "hull" || w == "blocker") o.hull = true;
         else if (w == "frontier" || w == "bfs") o.frontier = true;
         else if (w == "misses" || w == "miss") o.misses = true;
+        else if (w == "samples" || w == "fan") o.samples = true;
         else if (w == "grid") o.grid = true;
-        else if (w == "all") o.cylinder = o.hull = o.frontier = o.misses = true;
-        else if (w == "none") o.cylinder = o.hull = o.frontier = o.misses = false;
+        else if (w == "all") o.cylinder = o.hull = o.frontier = o.misses = o.samples = true;
+        else if (w == "none") o.cylinder = o.hull = o.frontier = o.misses = o.samples = false;
         else return std::nullopt;
     }
     return o;

@@ -13,6 +13,7 @@ enum class Heatmap {
     None,        ///< the image itself
     Tests,       ///< intersection tests per pixel
     HitMiss,     ///< share of cache hits and misses per pixel
+    HitRate,     ///< cache hit rate per pixel, hits / (hits + misses), on a fixed 0-1 scale
     VisitOrder,  ///< when each pixel was first visited
     BeamNode,    ///< beam-tree node of each pixel at the current path
 };
@@ -25,11 +26,12 @@ struct Overlays {
     bool hull = false;      ///< blocker hull ("cone"), blockers and target
     bool frontier = false;  ///< breadth-first queue, deferred seeds and regions
     bool misses = false;    ///< miss markers coloured by reason
+    bool samples = false;   ///< the sample rays of the pixel in focus (eye, shadow, gloss)
     bool grid = true;       ///< pixel grid at high zoom
     bool legend = true;     ///< the colour key
     double lineScale = 1.0; ///< line width factor (Large fonts draw thicker lines)
 
-    /// Parses "cylinder,cone,frontier,misses" (also "hull", "grid", "all", "none").
+    /// Parses "cylinder,cone,frontier,misses,samples" (also "hull", "grid", "all", "none").
     static std::optional<Overlays> parse(const QString& list);
 };
 

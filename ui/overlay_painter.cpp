@@ -87,7 +87,10 @@ void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o
     if (sel.object >= 0 && sel.object < s.scene().size())
         paintObject(p, s, proj, sel.object, palette::kSelection, withAlpha(palette::kSelection, 70), 3.0);
     // One ray in focus: the selected one, else the one being traced
-    if (auto f = RayFocus::of(s, sel)) paintFocus(p, s, proj, *f, o);
+    if (auto f = RayFocus::of(s, sel)) {
+        if (o.samples) paintSamples(p, s, proj, *f);
+        paintFocus(p, s, proj, *f, o);
+    }
     if (sel.pixel >= 0 && sel.pixel < s.width() * s.height()) {
         const QPointF c = pixelCentre(sel.pixel, s.width());
         const double half = std::max(0.5, 7.0 / scale);
@@ -178,6 +181,95 @@ void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Proje
         outline(p, sil, lineColor, width * lineScale_, Qt::SolidLine, fill, &work_, proj.covers(sil));
     }
 }
+
+// [paint-samples]
+namespace {
+constexpr int kHaloLines = 200;  ///< fans of more lines are drawn with hairlines
+}  // namespace
+
+void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
+    const SampleFan& fan = s.fan(f.pixel);
+    const double scale = std::sqrt(std::abs(p.transform().determinant()));
+    // The lights' spheres the shadow samples go to
+    for (const rc::Sphere& light : fan.lights) {
+        if (!(light.r > 0.0)) continue;
+        const QPolygonF sil = proj.silhouette(light);
+        outline(p, sil, palette::kLight, 2.0 * lineScale_, Qt::DashLine, withAlpha(palette::kLight, 40), &work_,
+                proj.covers(sil));
+    }
+    // Every ray but the eye samples is a segment, clipped like the outlines (near plane,
+    // then the view): one list per colour, a dark halo under each
+    auto colourOf = [](FanOutcome o) {
+        switch (o) {
+            case FanOutcome::Hit: return palette::kSampleRay;
+            case FanOutcome::Missed: return palette::kSampleMissed;
+            case FanOutcome::Lit: return palette::kShadowLit;
+            case FanOutcome::Blocked: return palette::kShadowBlocked;
+        }
+        return palette::kSampleRay;
+    };
+    // Segments are cut to the view itself (a few widget pixels over): the outlines' margin
+    // of a pixel is thousands of widget pixels at a high zoom, and a stroke costs its length
+    const QRectF visible = p.transform().inverted().mapRect(QRectF(p.viewport()));
+    const double margin = 4.0 / std::max(1e-9, scale);
+    const QRectF view = visible.adjusted(-margin, -margin, margin, margin);
+    auto clip = [&](const rc::Vec3& a, const rc::Vec3& b) -> std::optional<QLineF> {
+        if (auto l = proj.segment(a, b)) return clipLine(*l, view);
+        return std::nullopt;
+    };
+    std::array<QVector<QLineF>, 4> lines;
+    QVector<QLineF> beyond;  // blocked shadow rays: from the blocker on to their light point
+    std::array<QVector<QPointF>, 2> dots;  // eye samples: where they meet the image (hit, missed)
+    for (const FanRay& r : fan.rays) {
+        if (r.kind == rc::RayKind::Primary) {
+            if (auto c = proj.point(r.to); c && view.contains(*c)) {
+                dots[r.outcome == FanOutcome::Hit ? 0 : 1] << *c;
+                ++work_.samples;
+            }
+            continue;
+        }
+        if (auto l = clip(r.from, r.to)) {
+            lines[int(r.outcome)] << *l;
+            ++work_.samples;
+            work_.sampleLength += l->length() * scale;
+            work_.maxCoord = std::max({work_.maxCoord, std::abs(l->x1()), std::abs(l->y1()), std::abs(l->x2()),
+                                       std::abs(l->y2())});
+        }
+        if (r.outcome == FanOutcome::Blocked)
+            if (auto l = clip(r.to, r.aim)) beyond << *l;
+    }
+    // Solid pens only: a dash pattern costs a stroke per dash, thousands of lines of them
+    // would stall the window
+    // A pen wider than a pixel is stroked as a path, filled by the rasteriser: seconds for
+    // thousands of long lines. A large fan is drawn with hairlines (Qt's fast cosmetic
+    // stroker), a small one with a dark halo under each line so it reads on any image
+    int count = int(beyond.size());
+    for (const auto& l : lines) count += int(l.size());
+    const bool hairlines = count > kHaloLines;
+    const double width = hairlines ? 1.0 : 1.6 * lineScale_;
+    p.setBrush(Qt::NoBrush);
+    p.setPen(cosmetic(withAlpha(palette::kShadowBlocked, 90), 1.0));
+    p.drawLines(beyond);
+    if (!hairlines) {
+        p.setPen(cosmetic(QColor(0, 0, 0, 150), width + 2.0));
+        for (const auto& l : lines)
+            for (const QLineF& one : l) p.drawLine(one);  // one short path each
+    }
+    for (int k = 0; k < 4; ++k) {
+        p.setPen(cosmetic(colourOf(FanOutcome(k)), width));
+        if (hairlines) p.drawLines(lines[k]);
+        else
+            for (const QLineF& one : lines[k]) p.drawLine(one);
+    }
+    // The eye samples: dots at their jittered positions in the pixel
+    const double r = 3.0 * lineScale_ / std::max(1e-9, scale);
+    for (int k = 0; k < 2; ++k) {
+        p.setPen(cosmetic(Qt::black, 1.0));
+        p.setBrush(k == 0 ? palette::kSampleRay : palette::kSampleMissed);
+        for (const QPointF& c : dots[k]) p.drawEllipse(c, r, r);
+    }
+}
+// [paint-samples]
 
 void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers) {
     const rc::FrontierView f = s.session().order().frontier();
@@ -301,6 +393,28 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                                 QString("miss: %1 (%2)").arg(QString::fromUtf8(rc::toString(rc::MissReason(r)).data()))
                                     .arg(n.missReasons[r])});
     }
+    if (o.samples && focus) {
+        const SampleFan& fan = s.fan(focus->pixel);
+        const int eye = fan.count(rc::RayKind::Primary), shadow = fan.count(rc::RayKind::Shadow);
+        const int other = int(fan.rays.size()) - eye - shadow;
+        keys.push_back({Qt::transparent, QString("sample rays of pixel (%1,%2)%3:")
+                                             .arg(focus->pixel % s.width()).arg(focus->pixel / s.width())
+                                             .arg(fan.cut ? QString(", the first %1").arg(fan.rays.size()) : QString())});
+        keys.push_back({palette::kSampleRay, QString("%1 eye sample%2 (dots), %3 reflection/refraction ray%4: hit")
+                                                 .arg(eye).arg(eye == 1 ? "" : "s").arg(other).arg(other == 1 ? "" : "s")});
+        keys.push_back({palette::kSampleMissed, QString("hit nothing (%1)").arg(fan.count(FanOutcome::Missed))});
+        keys.push_back({palette::kShadowLit, QString("shadow rays reaching the light (%1 of %2)")
+                                                 .arg(fan.count(FanOutcome::Lit)).arg(shadow)});
+        keys.push_back({palette::kShadowBlocked, QString("shadow rays blocked (%1 of %2)")
+                                                     .arg(fan.count(FanOutcome::Blocked)).arg(shadow)});
+        double radius = 0.0;
+        for (const rc::Sphere& l : fan.lights) radius = std::max(radius, l.r);
+        if (radius > 0.0)
+            keys.push_back({palette::kLight, QString("light's sphere, r %1: %2 samples a hit%3")
+                                                 .arg(radius, 0, 'g', 3).arg(fan.shadowSamples)
+                                                 .arg(fan.notCast > 0 ? QString(", %1 behind the surface").arg(fan.notCast)
+                                                                      : QString())});
+    }
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
 
@@ -332,9 +446,13 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     double kw = 0;
     for (const auto& k : keys) kw = std::max(kw, fm.horizontalAdvance(k.second) + lh * 1.3);
     // A heatmap's colour bar, with values
-    const bool bar = o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder);
-    QString barTitle = heatmap_ == Heatmap::Tests ? "tests per pixel (log scale)" : "step of a pixel's first ray";
+    const bool bar =
+        o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate);
+    QString barTitle = heatmap_ == Heatmap::Tests     ? "tests per pixel (log scale)"
+                       : heatmap_ == Heatmap::HitRate ? "cache hit rate per pixel, all its rays"
+                                                      : "step of a pixel's first ray";
     if (heatTop_ > 0.0) barTitle += ", one scale for both";
+    if (o.legend && heatmap_ == Heatmap::HitRate) keys.push_back({palette::kNoLookups, "no cache lookups"});
     double top = 0;
     lastTop_ = 0;
     if (bar) {
@@ -398,7 +516,8 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     for (int k = 0; k <= 4; ++k) {
         const double t = k / 4.0;
         const double v = heatmap_ == Heatmap::Tests ? std::expm1(t * std::log1p(top)) : t * top;
-        const QString label = QString::number(v, 'f', v < 10 ? 1 : 0);
+        const QString label = heatmap_ == Heatmap::HitRate ? QString("%1%").arg(int(std::lround(100 * t)))
+                                                           : QString::number(v, 'f', v < 10 ? 1 : 0);
         const double x = strip.left() + t * strip.width();
         const double wdt = fm.horizontalAdvance(label);
         const double lx = std::clamp(x - wdt / 2, strip.left(), strip.right() - wdt);

@@ -21,6 +21,8 @@ struct PaintWork {
     int covering = 0;     ///< outlines that held the whole view (tinted, not stroked)
     double maxCoord = 0;  ///< largest |coordinate| of a vertex, in image units
     double length = 0;    ///< total outline length, in widget pixels
+    int samples = 0;      ///< sample rays of the pixel in focus drawn (eye samples as dots)
+    double sampleLength = 0;  ///< their segments' total length, in widget pixels
 };
 
 /// Paints overlays for one SessionState. Keeps a few per-pixel layers cached between
@@ -59,6 +61,7 @@ private:
                      const QColor& line, const QColor& fill, double width);
     void paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers);
     void paintMisses(QPainter& p, const SessionState& s, double scale, const Selection& sel);
+    void paintSamples(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f);
 
 public:
     /// What the last paint() drew.

@@ -21,6 +21,13 @@ inline const QColor kQueued{118, 255, 3};        ///< breadth-first queue
 inline const QColor kDeferred{255, 23, 68};      ///< deferred seeds
 inline const QColor kRegion{255, 255, 255};      ///< the region being filled
 inline const QColor kSelection{0, 176, 255};     ///< selected pixel and object
+inline const QColor kLight{255, 214, 0};         ///< lights: their stars and spheres
+// The sample rays of the pixel in focus (none of them a miss reason's colour)
+inline const QColor kSampleRay{255, 255, 255};   ///< eye and reflection samples that hit an object
+inline const QColor kSampleMissed{140, 150, 255}; ///< samples that hit nothing (they leave the scene)
+inline const QColor kShadowLit{255, 250, 190};   ///< shadow samples that reach the light
+inline const QColor kShadowBlocked{255, 40, 130}; ///< shadow samples an object stops
+inline const QColor kNoLookups{110, 110, 110};   ///< heatmaps: a pixel with no cache lookups
 
 /// A distinct, stable colour for a label (regions, beams).
 QColor label(std::int64_t id, int alpha = 255);

@@ -51,7 +51,7 @@ QString num(double v) { return QString::number(v, 'g', 3); }
 
 }  // namespace
 
-SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel) {
+SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel, bool samples) {
     SceneSketch k;
     const rc::Scene& scene = s.scene();
     for (int id = 0; id < scene.size(); ++id) {
@@ -81,6 +81,7 @@ SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel) {
             k.rays.push_back({r->ray.o, r->segmentEnd(scene), r->kind, i == f.event});
     }
     if (f.deferred) k.rays.push_back({f.ray.o, f.segmentEnd(scene), f.kind, true});
+    if (samples) k.fan = s.fan(f.pixel);
     k.hull = hullOf(s, f);
     k.cylinder = cylinderOf(s, f);
     // The object that sets the cylinder's radius: nearest its axis, the ray's own excepted
@@ -188,9 +189,10 @@ void SceneView::setAngle(SceneAngle a) {
     update();
 }
 
-void SceneView::setLayers(bool cylinder, bool hull) {
+void SceneView::setLayers(bool cylinder, bool hull, bool samples) {
     cylinderShown_ = cylinder;
     hullShown_ = hull;
+    samplesShown_ = samples;
     update();
 }
 
@@ -236,6 +238,13 @@ void SceneView::frame() {
             add(k.bodies[std::size_t(k.focus->hit)].bound.c, k.bodies[std::size_t(k.focus->hit)].bound.r);
         if (cylinderShown_ && k.limiter >= 0 && k.cylinder.cylinder.radius > 0.0)
             add(k.bodies[std::size_t(k.limiter)].bound.c, k.bodies[std::size_t(k.limiter)].bound.r);
+        // The sample rays' hits and the lights' spheres they fan to
+        if (samplesShown_ && !k.fan.rays.empty()) {
+            for (const FanRay& r : k.fan.rays)
+                if (r.kind != rc::RayKind::Primary && r.outcome != FanOutcome::Missed) add(r.to, 0.0);
+            for (const rc::Sphere& l : k.fan.lights)
+                if (l.r > 0.0) add(l.c, l.r);
+        }
         if (angle_ != SceneAngle::Along) {
             for (const auto& s : k.rays)
                 if (s.focus) {
@@ -326,8 +335,42 @@ void SceneView::paintEvent(QPaintEvent*) {
         p.setBrush(withAlpha(palette::kCylinder, 60));
         p.drawPolygon(hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius}));
     }
-    // The ray tree of the pixel in focus; the ray in focus thick, with its direction
+    // The sample rays of the pixel in focus: the shadow rays fan out to the light's sphere
+    const bool fan = samplesShown_ && !k.fan.rays.empty();
+    if (fan) {
+        for (const rc::Sphere& l : k.fan.lights) {
+            if (!(l.r > 0.0)) continue;
+            p.setPen(pen(palette::kLight, 2.0 * lw, Qt::DashLine));
+            p.setBrush(withAlpha(palette::kLight, 45));
+            p.drawEllipse(disc(l));
+        }
+        auto colourOf = [](FanOutcome o) {
+            return o == FanOutcome::Hit      ? palette::kSampleRay
+                   : o == FanOutcome::Missed ? palette::kSampleMissed
+                   : o == FanOutcome::Lit    ? palette::kShadowLit
+                                             : palette::kShadowBlocked;
+        };
+        // Solid pens (a dash pattern costs a stroke per dash); a large fan in hairlines and
+        // without halos, as in the image view: wide pens are filled as paths, seconds for thousands
+        const bool hairlines = k.fan.rays.size() > 200;
+        if (!hairlines)
+            for (const FanRay& r : k.fan.rays) {
+                p.setPen(pen(QColor(0, 0, 0, 150), 3.0 * lw));
+                p.drawLine(toWidget(r.from), toWidget(r.to));
+            }
+        for (const FanRay& r : k.fan.rays) {
+            p.setPen(pen(colourOf(r.outcome), hairlines ? 1.0 : 1.3 * lw));
+            p.drawLine(toWidget(r.from), toWidget(r.to));
+            if (r.outcome == FanOutcome::Blocked) {
+                p.setPen(pen(withAlpha(palette::kShadowBlocked, 90), 1.0));
+                p.drawLine(toWidget(r.to), toWidget(r.aim));
+            }
+        }
+    }
+    // The ray tree of the pixel in focus (the fan holds its rays: only the focus then); the
+    // ray in focus thick, with its direction
     for (const auto& s : k.rays) {
+        if (fan && !s.focus) continue;
         const QColor c = s.kind == rc::RayKind::Shadow ? QColor(255, 245, 157) : palette::kRay;
         p.setPen(pen(QColor(0, 0, 0, 170), (s.focus ? 4.5 : 2.5) * lw));
         p.drawLine(toWidget(s.a), toWidget(s.b));
@@ -355,7 +398,7 @@ void SceneView::paintEvent(QPaintEvent*) {
     // Lights (stars) and the eye
     for (const rc::Vec3& l : k.lights) {
         const QPointF c = toWidget(l);
-        p.setPen(pen(QColor(255, 214, 0), 2.0 * lw));
+        p.setPen(pen(palette::kLight, 2.0 * lw));
         for (int a = 0; a < 4; ++a) {
             const double t = a * M_PI / 4;
             const QPointF d(std::cos(t) * 7 * lw, std::sin(t) * 7 * lw);
@@ -381,7 +424,7 @@ void SceneView::paintEvent(QPaintEvent*) {
         p.drawText(r, Qt::AlignCenter, t);
     };
     label(eye, "eye", Qt::white);
-    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), QColor(255, 214, 0));
+    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), palette::kLight);
     if (k.hull.valid() && hullShown_) {
         const rc::Sphere& a = k.hull.a;
         label(toWidget(a.c) + QPointF(0, a.r * scale_ * 0.7), "origin", palette::kOrigin);
@@ -419,6 +462,13 @@ void SceneView::paintEvent(QPaintEvent*) {
                     .arg(num(k.bodies[std::size_t(hit)].bound.r));
         if (k.limiter >= 0) c += QString("%1#%2 sets it").arg(c.isEmpty() ? "" : "; ").arg(k.limiter);
         if (!c.isEmpty()) cap << c;
+    }
+    if (fan) {
+        const int eye = k.fan.count(rc::RayKind::Primary), shadow = k.fan.count(rc::RayKind::Shadow);
+        cap << QString("sample rays: %1 eye, %2 reflection/refraction, %3 shadow (%4 reach the light, %5 blocked)%6")
+                   .arg(eye).arg(int(k.fan.rays.size()) - eye - shadow).arg(shadow)
+                   .arg(k.fan.count(FanOutcome::Lit)).arg(k.fan.count(FanOutcome::Blocked))
+                   .arg(k.fan.cut ? QString(", the first %1").arg(k.fan.rays.size()) : QString());
     }
     caption_ = cap.join("\n");
     double cw = 0;

@@ -12,6 +12,7 @@
 
 #include "gui_options.h"
 #include "ray_focus.h"
+#include "sample_fan.h"
 
 class QComboBox;
 class QCheckBox;
@@ -43,9 +44,11 @@ struct SceneSketch {
     FocusCylinder cylinder;
     bool hasCylinder = false;         ///< the cache keeps cylinders (or none: drawn around the ray)
     int limiter = -1;                 ///< the object nearest the cylinder's axis: it sets the radius
+    SampleFan fan;                    ///< the sample rays of the pixel in focus (empty: not asked for)
 
-    /// The sketch of `s` with the ray `sel` puts in focus.
-    static SceneSketch of(const SessionState& s, const Selection& sel);
+    /// The sketch of `s` with the ray `sel` puts in focus (and its pixel's sample rays
+    /// when `samples`).
+    static SceneSketch of(const SessionState& s, const Selection& sel, bool samples = false);
 };
 
 /// An orthographic projection: screen x and y, and z towards the viewer.
@@ -73,7 +76,7 @@ public:
     double yaw() const { return yaw_; }
     double pitch() const { return pitch_; }
     /// Which of the focused ray's shapes are drawn (the overlay toggles).
-    void setLayers(bool cylinder, bool hull);
+    void setLayers(bool cylinder, bool hull, bool samples = false);
     /// Frame the whole scene rather than the ray in focus.
     void setWholeScene(bool on);
     /// Where world point `p` is drawn (widget coordinates), in the current framing.
@@ -98,7 +101,7 @@ private:
     SceneAngle angle_ = SceneAngle::Side;
     double yaw_ = 0.0, pitch_ = 0.0, zoom_ = 1.0;
     bool whole_ = false;
-    bool cylinderShown_ = true, hullShown_ = true;
+    bool cylinderShown_ = true, hullShown_ = true, samplesShown_ = false;
     SceneBasis basis_;
     double scale_ = 1.0;
     QPointF centre_;  ///< world (x, y) at the middle of the drawing area

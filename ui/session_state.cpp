@@ -31,6 +31,11 @@ SessionState::~SessionState() {
     session_->removeSink(&beams_);
 }
 
+const SampleFan& SessionState::fan(int pixel) const {
+    if (!fan_ || fan_->pixel != pixel) fan_ = std::make_unique<SampleFan>(SampleFan::trace(*session_, pixel));
+    return *fan_;
+}
+
 void SessionState::sample() {
     const rc::Counters& n = session_->counters();
     recorder_.sample({session_->steps(), n.hits, n.misses, n.intersectionTests});

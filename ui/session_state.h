@@ -7,6 +7,7 @@
 
 #include "analysis/beam_tree.h"
 #include "render/render_session.h"
+#include "sample_fan.h"
 #include "scene/camera.h"
 #include "trace_recorder.h"
 
@@ -59,6 +60,9 @@ public:
     /// A number no other SessionState of this process has: caches of derived pictures
     /// key on it (an address may be reused by the next state, e.g. after Step back).
     std::uint64_t serial() const { return serial_; }
+    /// The sample rays of `pixel` (SampleFan::trace), kept for the last pixel asked: the
+    /// overlays and the scene view ask on every paint.
+    const SampleFan& fan(int pixel) const;
 
 private:
     std::uint64_t serial_;
@@ -69,6 +73,7 @@ private:
     rc::RayGenerator camera_;
     TraceRecorder recorder_;
     rc::BeamTreeBuilder beams_;
+    mutable std::unique_ptr<SampleFan> fan_;
 };
 
 }  // namespace rcgui

@@ -29,10 +29,10 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
     }
     lastCommitted_ = e;
     if (firstVisit_[p] < 0) firstVisit_[p] = e.step;
-    if (e.lookup.decision == rc::Decision::Hit && hits_[p] < 0xFFFF) ++hits_[p];
+    if (e.lookup.decision == rc::Decision::Hit) ++hits_[p];
     if (e.lookup.decision == rc::Decision::Miss) {
         misses_.push_back(index);
-        if (missCount_[p] < 0xFFFF) ++missCount_[p];
+        ++missCount_[p];
         if (missReason_[p] == 0) missReason_[p] = std::uint8_t(e.lookup.reason);
     }
 }

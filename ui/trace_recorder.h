@@ -33,7 +33,7 @@ public:
     /// Indices into events() of committed misses and of deferrals, in order.
     const BlockVector<std::int32_t>& misses() const { return misses_; }
     /// Bytes the per-event record takes (events and the miss index), to weigh against
-    /// events().size(). The per-pixel tallies come on top: width x height x 21 bytes.
+    /// events().size(). The per-pixel tallies come on top: width x height x 25 bytes.
     std::size_t eventBytes() const { return events_.bytes() + misses_.bytes(); }
     /// The last event heard (committed or deferred), if any.
     const std::optional<rc::TraceEvent>& lastEvent() const { return last_; }
@@ -47,8 +47,10 @@ public:
     int eventAt(int pixel, int node) const;
 
     std::int32_t testsAt(int pixel) const { return tests_[pixel]; }
-    std::uint16_t hitsAt(int pixel) const { return hits_[pixel]; }
-    std::uint16_t missesAt(int pixel) const { return missCount_[pixel]; }
+    /// Committed cache hits and misses of every ray of the pixel (all samples): a pixel of
+    /// 256 samples with 64 shadow rays each makes more lookups than 16 bits hold.
+    std::uint32_t hitsAt(int pixel) const { return hits_[pixel]; }
+    std::uint32_t missesAt(int pixel) const { return missCount_[pixel]; }
     /// Step at which the pixel's first ray was traced, -1 if none.
     std::int64_t firstVisit(int pixel) const { return firstVisit_[pixel]; }
     /// Reason of the pixel's first committed miss (rc::MissReason::None if none).
@@ -65,7 +67,7 @@ private:
     BlockVector<std::int32_t> misses_;
     std::vector<std::int32_t> lastOfPixel_;
     std::vector<std::int32_t> tests_;
-    std::vector<std::uint16_t> hits_, missCount_;
+    std::vector<std::uint32_t> hits_, missCount_;
     std::vector<std::int64_t> firstVisit_;
     std::vector<std::uint8_t> missReason_;
     std::optional<rc::TraceEvent> last_, lastCommitted_;
