@@ -410,10 +410,10 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
         double radius = 0.0;
         for (const rc::Sphere& l : fan.lights) radius = std::max(radius, l.r);
         if (radius > 0.0)
-            keys.push_back({palette::kLight, QString("light's sphere, r %1: %2 samples a hit%3")
-                                                 .arg(radius, 0, 'g', 3).arg(fan.shadowSamples)
-                                                 .arg(fan.notCast > 0 ? QString(", %1 behind the surface").arg(fan.notCast)
-                                                                      : QString())});
+            keys.push_back({palette::kLight, QString("light's sphere (r %1), %2 points a hit")
+                                                 .arg(radius, 0, 'g', 3).arg(fan.shadowSamples)});
+        if (fan.notCast > 0)
+            keys.push_back({Qt::transparent, QString("%1 light points behind the surface: no ray").arg(fan.notCast)});
     }
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
@@ -429,9 +429,12 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
         p.setFont(small);
     }
     {
-        // A caption wider than the view takes a smaller font rather than be cut off
+        // A caption or key wider than the view takes a smaller font rather than be cut off
         double widest = 0;
         for (const QString& c : caption) widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(c));
+        for (const auto& k : keys)
+            widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(k.second) +
+                                          1.3 * QFontMetricsF(p.font()).height());
         if (widest + 32 > area.width() && widest > 0) {
             QFont small = p.font();
             small.setPointSizeF(small.pointSizeF() * std::max(0.6, (area.width() - 32) / widest));
@@ -458,7 +461,8 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
     if (bar) {
         top = heatTop_ > 0.0 ? heatTop_ : HeatmapBuilder::scaleOf(s, heatmap_);
         lastTop_ = top;
-        kw = std::max(kw, std::max(220.0, fm.horizontalAdvance(barTitle) + 16));
+        // Room for five labels apart
+        kw = std::max({kw, 220.0, 7.0 * fm.horizontalAdvance("100.0"), fm.horizontalAdvance(barTitle) + 16});
     }
     const double barHeight = bar ? lh * 3.2 : 0.0;
     const double keyHeight = lh * double(keys.size()) + 8 + barHeight;

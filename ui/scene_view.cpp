@@ -338,12 +338,6 @@ void SceneView::paintEvent(QPaintEvent*) {
     // The sample rays of the pixel in focus: the shadow rays fan out to the light's sphere
     const bool fan = samplesShown_ && !k.fan.rays.empty();
     if (fan) {
-        for (const rc::Sphere& l : k.fan.lights) {
-            if (!(l.r > 0.0)) continue;
-            p.setPen(pen(palette::kLight, 2.0 * lw, Qt::DashLine));
-            p.setBrush(withAlpha(palette::kLight, 45));
-            p.drawEllipse(disc(l));
-        }
         auto colourOf = [](FanOutcome o) {
             return o == FanOutcome::Hit      ? palette::kSampleRay
                    : o == FanOutcome::Missed ? palette::kSampleMissed
@@ -366,6 +360,13 @@ void SceneView::paintEvent(QPaintEvent*) {
                 p.drawLine(toWidget(r.to), toWidget(r.aim));
             }
         }
+    }
+    // The lights' spheres over the rays' ends: every shadow ray ends inside one
+    for (const rc::Sphere& l : fan ? k.fan.lights : std::vector<rc::Sphere>{}) {
+        if (!(l.r > 0.0)) continue;
+        p.setPen(pen(palette::kLight, 2.0 * lw));
+        p.setBrush(withAlpha(palette::kLight, 60));
+        p.drawEllipse(disc(l));
     }
     // The ray tree of the pixel in focus (the fan holds its rays: only the focus then); the
     // ray in focus thick, with its direction
@@ -398,10 +399,12 @@ void SceneView::paintEvent(QPaintEvent*) {
     // Lights (stars) and the eye
     for (const rc::Vec3& l : k.lights) {
         const QPointF c = toWidget(l);
+        // Small over a light's sphere, so the rays' ends in it show
+        const double arm = fan && k.fan.lights.size() == k.lights.size() && k.fan.lights[0].r > 0.0 ? 3.0 : 7.0;
         p.setPen(pen(palette::kLight, 2.0 * lw));
         for (int a = 0; a < 4; ++a) {
             const double t = a * M_PI / 4;
-            const QPointF d(std::cos(t) * 7 * lw, std::sin(t) * 7 * lw);
+            const QPointF d(std::cos(t) * arm * lw, std::sin(t) * arm * lw);
             p.drawLine(c - d, c + d);
         }
     }
@@ -465,7 +468,7 @@ void SceneView::paintEvent(QPaintEvent*) {
     }
     if (fan) {
         const int eye = k.fan.count(rc::RayKind::Primary), shadow = k.fan.count(rc::RayKind::Shadow);
-        cap << QString("sample rays: %1 eye, %2 reflection/refraction, %3 shadow (%4 reach the light, %5 blocked)%6")
+        cap << QString("samples: %1 eye, %2 reflected or refracted, %3 shadow: %4 reach the light, %5 blocked%6")
                    .arg(eye).arg(int(k.fan.rays.size()) - eye - shadow).arg(shadow)
                    .arg(k.fan.count(FanOutcome::Lit)).arg(k.fan.count(FanOutcome::Blocked))
                    .arg(k.fan.cut ? QString(", the first %1").arg(k.fan.rays.size()) : QString());

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs raycache-gui headless screenshots under valgrind's memcheck: pair, glass and cube:4
-# with every overlay, each heatmap, --select, --compare and --scene-view. Exits 1 on the
+# with every overlay, each heatmap, --select, --compare and --scene-view, and a sample fan. Exits 1 on the
 # first run that reports an error. Usage: tests/ui/valgrind_gui.sh [build dir] (default build)
 #
 # Qt compiles regular expressions to machine code with PCRE2's JIT, and memcheck cannot
@@ -38,4 +38,6 @@ run cube4 cube:4 --width 128 --height 128 --overlays all --steps 40000 --heatmap
 run cube4_beam cube:4 --width 128 --height 128 --overlays all --steps 3000 --heatmap beam
 run compare pair --overlays all --steps 2000 --compare none:scanline --heatmap tests
 run scene trio --overlays all --steps 3000 --scene-view side
+run fan cube:4 --width 64 --height 64 --spp 4 --light-radius 0.3 --shadow-samples 8 --steps 200000 --select 29,17 \
+    --overlays all --scene-view --heatmap hitrate
 echo "valgrind_gui: no errors"
