@@ -182,11 +182,6 @@ void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Proje
     }
 }
 
-// [paint-samples]
-namespace {
-constexpr int kHaloLines = 200;  ///< fans of more lines are drawn with hairlines
-}  // namespace
-
 void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
     const SampleFan& fan = s.fan(f.pixel);
     const double scale = std::sqrt(std::abs(p.transform().determinant()));
@@ -197,8 +192,8 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
         outline(p, sil, palette::kLight, 2.0 * lineScale_, Qt::DashLine, withAlpha(palette::kLight, 40), &work_,
                 proj.covers(sil));
     }
-    // Every ray but the eye samples is a segment, clipped like the outlines (near plane,
-    // then the view): one list per colour, a dark halo under each
+    // Every ray but the eye samples is a segment, clipped to the near plane and the view:
+    // one list per colour
     auto colourOf = [](FanOutcome o) {
         switch (o) {
             case FanOutcome::Hit: return palette::kSampleRay;
@@ -238,14 +233,13 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
         if (r.outcome == FanOutcome::Blocked)
             if (auto l = clip(r.to, r.aim)) beyond << *l;
     }
-    // Solid pens only: a dash pattern costs a stroke per dash, thousands of lines of them
-    // would stall the window
-    // A pen wider than a pixel is stroked as a path, filled by the rasteriser: seconds for
-    // thousands of long lines. A large fan is drawn with hairlines (Qt's fast cosmetic
-    // stroker), a small one with a dark halo under each line so it reads on any image
+    // Solid pens only (a dash pattern costs a stroke per dash). A pen wider than a pixel
+    // is stroked as a path and filled by the rasteriser: seconds for thousands of long
+    // lines. So a large fan is drawn in hairlines (Qt's fast cosmetic stroker), a small
+    // one with a dark halo under each line, one path each, so that it reads on any image
     int count = int(beyond.size());
     for (const auto& l : lines) count += int(l.size());
-    const bool hairlines = count > kHaloLines;
+    const bool hairlines = count > SampleFan::kHaloRays;
     const double width = hairlines ? 1.0 : 1.6 * lineScale_;
     p.setBrush(Qt::NoBrush);
     p.setPen(cosmetic(withAlpha(palette::kShadowBlocked, 90), 1.0));
@@ -269,7 +263,6 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
         for (const QPointF& c : dots[k]) p.drawEllipse(c, r, r);
     }
 }
-// [paint-samples]
 
 void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers) {
     const rc::FrontierView f = s.session().order().frontier();
@@ -413,7 +406,7 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
             keys.push_back({palette::kLight, QString("light's sphere (r %1), %2 points a hit")
                                                  .arg(radius, 0, 'g', 3).arg(fan.shadowSamples)});
         if (fan.notCast > 0)
-            keys.push_back({Qt::transparent, QString("%1 light points behind the surface: no ray").arg(fan.notCast)});
+            keys.push_back({Qt::transparent, QString("no ray to %1 light points (behind the surface)").arg(fan.notCast)});
     }
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});

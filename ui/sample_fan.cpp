@@ -32,7 +32,6 @@ SampleFan SampleFan::trace(const rc::RenderSession& session, int pixel, int maxR
     rc::ImageAccumulator image(session.width(), session.height(), pixel / session.width(),
                                pixel / session.width() + 1);
 
-    // [fan-trace]
     // The pixel's eye samples, as the render makes them: same jitter, same keys
     const int spp = sampling.spp;
     std::vector<std::pair<rc::RayTask, int>> level, next;  // a task and its parent's index
@@ -89,7 +88,6 @@ SampleFan SampleFan::trace(const rc::RenderSession& session, int pixel, int maxR
         level.swap(next);
         next.clear();
     }
-    // [fan-trace]
     return fan;
 }
 

@@ -39,6 +39,9 @@ struct FanRay {
 struct SampleFan {
     /// At most this many rays are re-traced (glossy reflection branches at every depth).
     static constexpr int kMaxRays = 4096;
+    /// Fans of more rays are drawn in hairlines, without a halo: a wider pen is filled as
+    /// a path, and thousands of them take seconds to paint.
+    static constexpr int kHaloRays = 200;
 
     int pixel = -1;
     std::vector<FanRay> rays;

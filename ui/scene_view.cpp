@@ -346,7 +346,7 @@ void SceneView::paintEvent(QPaintEvent*) {
         };
         // Solid pens (a dash pattern costs a stroke per dash); a large fan in hairlines and
         // without halos, as in the image view: wide pens are filled as paths, seconds for thousands
-        const bool hairlines = k.fan.rays.size() > 200;
+        const bool hairlines = int(k.fan.rays.size()) > SampleFan::kHaloRays;
         if (!hairlines)
             for (const FanRay& r : k.fan.rays) {
                 p.setPen(pen(QColor(0, 0, 0, 150), 3.0 * lw));
@@ -362,8 +362,8 @@ void SceneView::paintEvent(QPaintEvent*) {
         }
     }
     // The lights' spheres over the rays' ends: every shadow ray ends inside one
-    for (const rc::Sphere& l : fan ? k.fan.lights : std::vector<rc::Sphere>{}) {
-        if (!(l.r > 0.0)) continue;
+    for (const rc::Sphere& l : k.fan.lights) {
+        if (!fan || !(l.r > 0.0)) continue;
         p.setPen(pen(palette::kLight, 2.0 * lw));
         p.setBrush(withAlpha(palette::kLight, 60));
         p.drawEllipse(disc(l));
@@ -400,7 +400,7 @@ void SceneView::paintEvent(QPaintEvent*) {
     for (const rc::Vec3& l : k.lights) {
         const QPointF c = toWidget(l);
         // Small over a light's sphere, so the rays' ends in it show
-        const double arm = fan && k.fan.lights.size() == k.lights.size() && k.fan.lights[0].r > 0.0 ? 3.0 : 7.0;
+        const double arm = fan && !k.fan.lights.empty() && k.fan.lights.front().r > 0.0 ? 3.0 : 7.0;
         p.setPen(pen(palette::kLight, 2.0 * lw));
         for (int a = 0; a < 4; ++a) {
             const double t = a * M_PI / 4;
