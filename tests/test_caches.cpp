@@ -9,6 +9,7 @@
 
 #include "random_scenes.h"
 #include "render/render_session.h"
+#include "geometry/cone.h"
 #include "search/accelerator.h"
 #include "search/blocker_cache.h"
 #include "search/cylinder_cache.h"
@@ -307,4 +308,48 @@ TEST_CASE("the cache tree flushes the entries beneath a miss", "[cache][tree]") 
     tree.flushBelow(0);
     REQUIRE(tree.entry(refl).state == CacheEntry::State::Flushed);
     REQUIRE(tree.entry(refr).state == CacheEntry::State::Flushed);
+}
+
+TEST_CASE("a tiled polygon is listed when a tile meets the hull: the tiles under it decide", "[cache][blocker][tiles]") {
+    // blocker+ cuts large polygons into tiles; building a list measures only the tiles under
+    // the hull (BlockerLists::tilesUnder), which must list exactly what measuring them all does
+    const Scene scene = testing::randomScene(Layout::Polygons, 5, 150);
+    const LinearSearch linear(scene);
+    BlockerLists lists(scene, linear, true);
+    const int firstTile = scene.size() + 1 + int(scene.lights.size());
+    REQUIRE(lists.sites() > firstTile);  // the scene has tiled polygons
+    const double tolerance = 1e-7 * scene.extent();
+    std::mt19937_64 rng(29);
+    std::uniform_int_distribution<int> pick(0, scene.size() - 1);
+    int listedTiled = 0, leftOutTiled = 0;
+    for (int k = 0; k < 400; ++k) {
+        const int origin = pick(rng), target = pick(rng);
+        if (origin == target) continue;
+        Counters n;
+        const BlockerList& list = lists.get(origin, target, n);
+        const Hull hull(lists.siteSphere(origin), lists.siteSphere(target));
+        for (int polygon = 0; polygon < scene.size(); ++polygon) {
+            if (polygon == target) continue;
+            // The least gap between the hull and any tile of this polygon, every tile measured
+            double gap = kNoHit;
+            bool tiled = false;
+            for (int site = firstTile; site < lists.sites(); ++site) {
+                if (lists.siteObject(site) != polygon) continue;
+                tiled = true;
+                const Sphere tile = lists.siteSphere(site);
+                gap = std::min(gap, hull.distance(tile.c) - tile.r);
+            }
+            if (!tiled) continue;
+            const bool listed = std::count(list.ids.begin(), list.ids.end(), polygon) == 1;
+            INFO("pair " << origin << " -> " << target << " polygon " << polygon << " gap " << gap);
+            if (gap > tolerance) REQUIRE_FALSE(listed);
+            const bool boundMeets = hull.distance(scene.objects[polygon].bound.c) - scene.objects[polygon].bound.r < -tolerance;
+            if (gap < -tolerance && boundMeets) REQUIRE(listed);
+            listedTiled += listed;
+            leftOutTiled += !listed && boundMeets;
+        }
+    }
+    // Both outcomes occur: tiles keep polygons whose bounding sphere meets the hull out
+    REQUIRE(listedTiled > 20);
+    REQUIRE(leftOutTiled > 20);
 }

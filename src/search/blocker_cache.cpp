@@ -16,7 +16,7 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 }  // namespace
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
-    : CacheStrategy(scene, search), plus_(variant == Variant::Plus), lists_(scene, search, plus_) {
+    : CacheStrategy(scene, search), plus_(variant == Variant::Plus), lists_(scene, search, plus_, plus_) {
     if (plus_) byOrigin_.resize(3 * (std::size_t(scene.size()) + 1));
 }
 

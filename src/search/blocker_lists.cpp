@@ -15,9 +15,9 @@ namespace {
 /// `meets(id, hull)` has the last word on an object whose bounding sphere meets it.
 template <class Meets>
 struct HullCull final : SphereCull {
-    HullCull(const Sphere& from, const Sphere& to, int target, double slack, Counters& n,
+    HullCull(const Sphere& from, const Sphere& to, int target, double slack, std::size_t longest, Counters& n,
              std::vector<std::pair<double, int>>& out, Meets meets)
-        : hull(from, to), target(target), n(n), out(out), meets(meets) {
+        : hull(from, to), target(target), longest(longest), n(n), out(out), meets(meets) {
         // The hull lies within the larger radius of the segment between the centres
         a = from.c;
         b = to.c;
@@ -32,9 +32,12 @@ struct HullCull final : SphereCull {
     void found(int id, double) override {
         if (id == target || !meets(id, hull)) return;
         out.emplace_back(0.0, id);  // its reach is set once the list is known
+        // Longer than a list worth testing: stop, nothing more can matter
+        if (out.size() > longest) limit = -kNoHit;
     }
     Hull hull;
     int target;
+    std::size_t longest;  ///< stop once the list is longer than this
     Counters& n;
     std::vector<std::pair<double, int>>& out;
     Meets meets;
@@ -50,8 +53,8 @@ double medianRadius(const Scene& scene) {
 }
 }  // namespace
 
-BlockerLists::BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles)
-    : scene_(scene), search_(search) {
+BlockerLists::BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles, bool stepAside)
+    : scene_(scene), search_(search), stepAside_(stepAside && search.cheap()) {
     // Rounding only ever adds spheres to a list: widen the hull by a few ulps of the scene
     slack_ = 1e-9 * scene.extent();
     if (tiles && scene.size() > 1) makeTiles();
@@ -96,6 +99,33 @@ void BlockerLists::makeTiles() {
     }
     if (tilings_.empty()) tilingOf_.clear();
     // [make-tiles]
+}
+
+bool BlockerLists::tilesUnder(const Tiling& t, const Sphere& a, const Sphere& b, int& i0, int& i1, int& j0,
+                              int& j1) const {
+    // The hull of a and b lies within the box of the two spheres. A tile's sphere (centred
+    // in the plane) can meet it only where that box, widened by the tile's radius, reaches
+    // the plane, over the tile's centre
+    const double reach = tileSpheres_[std::size_t(t.firstTile)].r + slack_;
+    auto extent = [&](const Vec3& axis, double& lo, double& hi) {
+        const double ua = glm::dot(a.c - t.corner, axis), ub = glm::dot(b.c - t.corner, axis);
+        lo = std::min(ua - a.r, ub - b.r) - reach;
+        hi = std::max(ua + a.r, ub + b.r) + reach;
+    };
+    double lo = 0.0, hi = 0.0;
+    extent(glm::cross(t.e1, t.e2), lo, hi);  // height above the plane
+    if (lo > 0.0 || hi < 0.0) return false;
+    // Tile i's centre is at (i + 1/2) du along e1: those within [lo, hi]
+    auto tiles = [](double lo, double hi, double step, int count, int& first, int& last) {
+        if (hi < 0.0 || lo > step * count) return false;
+        first = std::clamp(int(std::floor(lo / step)), 0, count - 1);
+        last = std::clamp(int(std::floor(hi / step)), 0, count - 1);
+        return true;
+    };
+    extent(t.e1, lo, hi);
+    if (!tiles(lo, hi, t.du, t.nu, i0, i1)) return false;
+    extent(t.e2, lo, hi);
+    return tiles(lo, hi, t.dv, t.nv, j0, j1);
 }
 
 int BlockerLists::tileSite(const Tiling& t, const Vec3& p) const {
@@ -169,15 +199,29 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     auto meets = [&](int id, const Hull& hull) {
         if (tilingOf_.empty() || tilingOf_[id] < 0) return true;
         const Tiling& t = tilings_[tilingOf_[id]];
-        for (int k = t.firstTile; k < t.firstTile + t.nu * t.nv; ++k) {
-            const Sphere& tile = tileSpheres_[std::size_t(k)];
-            ++n.hullTests;
-            if (hull.distance(tile.c) - tile.r <= slack_) return true;
-        }
+        int i0, i1, j0, j1;
+        if (!tilesUnder(t, a, b, i0, i1, j0, j1)) return false;
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const Sphere& tile = tileSpheres_[std::size_t(t.firstTile + j * t.nu + i)];
+                ++n.hullTests;
+                if (hull.distance(tile.c) - tile.r <= slack_) return true;
+            }
         return false;
     };
-    HullCull hull(a, b, siteObject(target), slack_, n, found_, meets);
+    // In front of a cheap search, a list longer than kLongList is not tested: building
+    // stops there (on balls:4 a long list took a thousand hull tests)
+    const std::size_t longest = stepAside_ ? kLongList : found_.max_size();
+    HullCull hull(a, b, siteObject(target), slack_, longest, n, found_, meets);
     search_.cull(hull);
+    if (found_.size() > longest) {
+        // [step-aside-list]
+        // Not worth testing: its pair is searched instead
+        list.bypass = true;
+        ++n.blockerListsBuilt;
+        return list;
+        // [step-aside-list]
+    }
     for (auto& [reach, id] : found_) {
         const Sphere& s = scene_.objects[id].bound;
         reach = glm::length(s.c - a.c) - s.r - a.r - slack_;
@@ -189,7 +233,6 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
         list.reach.push_back(reach);
         list.ids.push_back(id);
     }
-    list.bypass = search_.cheap() && list.ids.size() > kLongList;
     ++n.blockerListsBuilt;
     n.blockerListEntries += list.ids.size();
     n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());

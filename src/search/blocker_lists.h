@@ -24,7 +24,8 @@ struct BlockerList {
     std::vector<int> ids;
     std::vector<double> reach;  ///< |c_j - c_origin| - r_j - r_origin, ascending
     /// Longer than a complete search through a grid or hierarchy: its pair is searched
-    /// instead (a huge polygon's bounding sphere meets nearly every hull it is part of).
+    /// instead (a huge polygon's bounding sphere meets nearly every hull it is part of),
+    /// and the list is left empty
     bool bypass = false;
 };
 
@@ -46,8 +47,10 @@ inline constexpr std::size_t kLongList = 32;
 class BlockerLists {
 public:
     /// Candidates come from `search` (all objects for a linear scan, nearby cells for a
-    /// grid). `tiles`: cut large polygons into tiles (blocker+).
-    BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles = false);
+    /// grid). `tiles`: cut large polygons into tiles (blocker+). `stepAside`: in front of a
+    /// cheap search, a list longer than kLongList is left empty and marked `bypass`, its
+    /// building stopped there (blocker+).
+    BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles = false, bool stepAside = false);
 
     int eyeSite() const { return scene_.size(); }
     int lightSite(int k) const { return scene_.size() + 1 + k; }
@@ -88,6 +91,8 @@ private:
         int nu = 1, nv = 1;
     };
     int tileSite(const Tiling& t, const Vec3& p) const;
+    /// The tiles of `t` that can meet the hull of a and b: [i0, i1] x [j0, j1], or none.
+    bool tilesUnder(const Tiling& t, const Sphere& a, const Sphere& b, int& i0, int& i1, int& j0, int& j1) const;
     int firstTileSite() const { return scene_.size() + 1 + int(scene_.lights.size()); }
     void makeTiles();
     std::uint64_t key(int origin, int target) const {
@@ -95,6 +100,7 @@ private:
     }
     const Scene& scene_;
     const CompleteSearch& search_;
+    bool stepAside_;  ///< lists longer than kLongList are left empty, not tested
     double slack_;
     std::vector<int> tilingOf_;       ///< per object: its tiling, or -1 (empty: no tiles)
     std::vector<Tiling> tilings_;
