@@ -160,4 +160,13 @@ FrontierView BreadthFirstOrder::frontier() const {
     return f;
 }
 
+std::size_t BreadthFirstOrder::heldBytes() const {
+    std::size_t tasks = 0;
+    for (const std::vector<RayTask>& p : paths_) tasks += p.size();
+    return tasks * sizeof(RayTask) + paths_.size() * sizeof(std::vector<RayTask>) +
+           (generation_.size() + slot_.size() + byPixel_.size() + queue_.items.size() + pending_.items.size()) *
+               sizeof(int) +
+           state_.size();
+}
+
 }  // namespace rc

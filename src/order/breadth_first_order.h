@@ -30,10 +30,14 @@ public:
     std::size_t queuePeak() const override { return peak_; }
     std::int64_t regions() const override { return regions_; }
     FrontierView frontier() const override;
+    std::unique_ptr<RayOrder> clone() const override { return std::make_unique<BreadthFirstOrder>(*this); }
+    void restore(const RayOrder& saved) override { assignKeepingEye(*this, saved); }
+    std::size_t heldBytes() const override;
     /// Scanlines per band.
     int band() const { return band_; }
 
 private:
+    friend class RayOrder;
     enum State : std::uint8_t { Absent, Unvisited, Queued, Deferred, Done };
     bool beginPath();
     void enqueueNeighbours(int local);

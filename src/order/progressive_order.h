@@ -18,8 +18,12 @@ public:
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
     std::size_t queuePeak() const override { return peak_; }
+    std::unique_ptr<RayOrder> clone() const override { return std::make_unique<ProgressiveOrder>(*this); }
+    void restore(const RayOrder& saved) override { assignKeepingEye(*this, saved); }
+    std::size_t heldBytes() const override { return queue_.size() * sizeof(RayTask); }
 
 private:
+    friend class RayOrder;
     int width_, height_, band_;
     int nextRow_;
     int samples_;

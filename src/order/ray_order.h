@@ -57,6 +57,26 @@ public:
     /// traced depth first: then the children's next rays really do start elsewhere.
     virtual bool flushesChildren() const { return false; }
     virtual FrontierView frontier() const { return {}; }
+
+    // [order-checkpoint]
+    /// A copy of the order as it is now: what it has handed out, queued and deferred. For
+    /// checkpoints of a stepping render; the copy is a value, never asked for rays.
+    virtual std::unique_ptr<RayOrder> clone() const = 0;
+    /// Becomes the order `saved` (a clone() of an order of the same kind and image) was,
+    /// keeping its own EyeMaker: the eye rays it makes are still this render's.
+    virtual void restore(const RayOrder& saved) = 0;
+    /// Bytes its queues hold (for the memory a checkpoint takes).
+    virtual std::size_t heldBytes() const = 0;
+    // [order-checkpoint]
+
+protected:
+    /// restore() for a final order: copy assignment from `saved`, the EyeMaker kept.
+    template <class Order>
+    static void assignKeepingEye(Order& self, const RayOrder& saved) {
+        EyeMaker eye = std::move(self.makeEye_);
+        self = dynamic_cast<const Order&>(saved);
+        self.makeEye_ = std::move(eye);
+    }
 };
 
 /// Makes an order for the scanlines [rowBegin, rowEnd) of an image `width` wide. `band` is

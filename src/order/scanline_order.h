@@ -16,9 +16,13 @@ public:
     std::optional<Pick> next() override;
     void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) override;
     std::size_t queuePeak() const override { return peak_; }
+    std::unique_ptr<RayOrder> clone() const override { return std::make_unique<ScanlineOrder>(*this); }
+    void restore(const RayOrder& saved) override { assignKeepingEye(*this, saved); }
+    std::size_t heldBytes() const override { return stack_.size() * sizeof(RayTask); }
     bool flushesChildren() const override { return true; }
 
 private:
+    friend class RayOrder;
     int pixels_;
     int nextPixel_;
     int samples_;

@@ -128,4 +128,32 @@ bool RenderSession::run(const std::function<bool(double)>& progress) {
     return true;
 }
 
+SessionCheckpoint RenderSession::checkpoint(const SessionCheckpoint* previous) const {
+    SessionCheckpoint c;
+    c.session = this;
+    c.steps = steps_;
+    c.primaries = primaries_;
+    c.done = done_;
+    c.counters = counters_;
+    c.paths = paths_;
+    c.image = ImageSnapshot(image_, previous ? &previous->image : nullptr);
+    c.order = order_->clone();
+    c.strategy = strategy_->checkpoint();
+    return c;
+}
+
+void RenderSession::restore(const SessionCheckpoint& c) {
+    if (c.session != this || !c.order || c.order->kind() != order_->kind())
+        throw std::invalid_argument("restore: a checkpoint of another render");
+    if (c.steps > steps_) throw std::invalid_argument("restore: the render is not yet at the checkpoint");
+    strategy_->restore(c.strategy.get());
+    order_->restore(*c.order);
+    c.image.restore(image_);
+    paths_ = c.paths;
+    counters_ = c.counters;
+    steps_ = c.steps;
+    primaries_ = c.primaries;
+    done_ = c.done;
+}
+
 }  // namespace rc

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "order/ray_order.h"
+#include "render/session_checkpoint.h"
 #include "search/accelerator.h"
 #include "search/cache_strategy.h"
 #include "trace/shading.h"
@@ -83,6 +84,18 @@ public:
     RayTask eyeTask(int pixel, int sample);
     /// Eye rays not yet started, as a fraction of all pixels (for progress).
     double progress() const;
+
+    // [session-checkpoint]
+    /// The render as it is now, to come back to with restore(). Scanlines of the image
+    /// equal to those of `previous` (an earlier checkpoint of this session, or null) are
+    /// shared with it.
+    SessionCheckpoint checkpoint(const SessionCheckpoint* previous = nullptr) const;
+    /// Goes back to a checkpoint this session took, exactly: stepping on from it traces
+    /// the same rays, with the same answers, counters and image, as it did the first time.
+    /// The session must be at or past it (the blocker lists are kept as a log that only
+    /// grows): throws std::invalid_argument otherwise. Sinks hear nothing of it.
+    void restore(const SessionCheckpoint& c);
+    // [session-checkpoint]
 
 private:
     std::shared_ptr<const Scene> scene_;

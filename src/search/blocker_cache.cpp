@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -18,6 +19,29 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant == Variant::Plus), lists_(scene, search, plus_, plus_) {
     if (plus_) byOrigin_.resize(3 * (std::size_t(scene.size()) + 1));
+}
+
+namespace {
+/// The blocker cache at a checkpoint: how many lists were built, and the entries by origin.
+struct BlockerCheckpoint final : StrategyCheckpoint {
+    std::size_t lists = 0;  ///< the lists are a log: the checkpoint keeps its length
+    std::vector<CacheEntry> byOrigin;
+    std::size_t bytes() const override { return byOrigin.size() * sizeof(CacheEntry); }
+};
+}  // namespace
+
+std::unique_ptr<StrategyCheckpoint> BlockerCache::checkpoint() const {
+    auto c = std::make_unique<BlockerCheckpoint>();
+    c->lists = lists_.size();
+    c->byOrigin = byOrigin_;
+    return c;
+}
+
+void BlockerCache::restore(const StrategyCheckpoint* saved) {
+    const auto* c = dynamic_cast<const BlockerCheckpoint*>(saved);
+    if (!c) throw std::invalid_argument("not a checkpoint of a blocker cache");
+    lists_.truncate(c->lists);
+    byOrigin_ = c->byOrigin;
 }
 
 bool BlockerCache::recall(const Query& q, CacheEntry& e) {

@@ -32,6 +32,8 @@ public:
     CacheKind kind() const override { return plus_ ? CacheKind::BlockerPlus : CacheKind::Blocker; }
     Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) override;
     const BlockerLists* blockerLists() const override { return &lists_; }
+    std::unique_ptr<StrategyCheckpoint> checkpoint() const override;
+    void restore(const StrategyCheckpoint* saved) override;
 
 protected:
     void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) override;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -237,6 +238,23 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     n.blockerListEntries += list.ids.size();
     n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());
     return list;
+}
+
+void BlockerLists::truncate(std::size_t n) {
+    if (n > lists_.size()) throw std::logic_error("BlockerLists::truncate: cannot grow");
+    if (n == lists_.size()) return;
+    lists_.resize(n);
+    // Open addressing cannot erase in place: put the lists kept back into an empty table
+    std::vector<std::uint64_t> keys(slotKeys_.size(), 0);
+    std::vector<std::uint32_t> lists(slotLists_.size(), 0);
+    keys.swap(slotKeys_);
+    lists.swap(slotLists_);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        if (keys[k] == 0 || lists[k] >= n) continue;
+        const std::size_t to = slot(keys[k] - 1);
+        slotKeys_[to] = keys[k];
+        slotLists_[to] = lists[k];
+    }
 }
 
 }  // namespace rc

@@ -81,6 +81,10 @@ public:
     /// The list if it was built, else nullptr.
     const std::vector<int>* find(int origin, int target) const;
     std::size_t size() const { return lists_.size(); }
+    /// Forgets every list but the first `n` built (n <= size()): the lists are a log that
+    /// only grows, so a checkpoint of a render keeps its length, not a copy. Slow (it
+    /// rebuilds the table); never called while rendering.
+    void truncate(std::size_t n);
 
 private:
     /// A polygon cut into nu x nv tiles over its box in the plane (corner, e1, e2).

@@ -43,6 +43,14 @@ struct Lookup {
     bool searched = false;  ///< a complete search was made
 };
 
+/// What a cache strategy knows beyond the cache tree's entries, as it was at a checkpoint
+/// of a stepping render (see CacheStrategy::checkpoint).
+struct StrategyCheckpoint {
+    virtual ~StrategyCheckpoint() = default;
+    /// Bytes it holds.
+    virtual std::size_t bytes() const = 0;
+};
+
 /// A cache strategy: looks up a query in its cache entry, falling back on the complete
 /// search. Every answer it gives equals the complete search's, object and distance.
 class CacheStrategy {
@@ -56,6 +64,15 @@ public:
     virtual bool caches() const { return true; }
     /// The blocker lists, for strategies that have them.
     virtual const BlockerLists* blockerLists() const { return nullptr; }
+
+    // [strategy-checkpoint]
+    /// What the strategy keeps beyond the entries it is handed (null: nothing, as for no
+    /// cache and the cylinder cache, whose whole state is in the cache tree).
+    virtual std::unique_ptr<StrategyCheckpoint> checkpoint() const { return nullptr; }
+    /// Goes back to a checkpoint this strategy took (null: one it took with nothing in
+    /// it). The strategy must be at or past it: what it learnt since is forgotten.
+    virtual void restore(const StrategyCheckpoint* saved) { (void)saved; }
+    // [strategy-checkpoint]
 
 protected:
     /// A complete search, counted, and the entry reloaded with its answer.

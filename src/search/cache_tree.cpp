@@ -68,4 +68,11 @@ std::string CacheTree::label(int node) const {
     return n.parent < 0 ? me : label(n.parent).append("/").append(me);
 }
 
+std::size_t CacheTree::bytes() const {
+    std::size_t b = nodes_.size() * sizeof(Node) + entries_.size() * sizeof(CacheEntry) +
+                    (roots_.size() + canonical_.size()) * sizeof(int);
+    for (const Node& n : nodes_) b += n.children.size() * sizeof(int);
+    return b;
+}
+
 }  // namespace rc

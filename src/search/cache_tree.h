@@ -87,6 +87,8 @@ public:
     /// Distinct cache entries (equals size() with one entry per sample).
     int entries() const { return int(entries_.size()); }
     SampleEntries sharing() const { return sharing_; }
+    /// Bytes it holds (paths and entries), for the memory a checkpoint takes.
+    std::size_t bytes() const;
     /// A readable name such as "eye/reflection/shadow 1" ("#k" marks sample k > 0).
     std::string label(int node) const;
 

@@ -55,6 +55,7 @@ struct Counters {
 
     std::uint64_t totalRays() const { return rays[0] + rays[1] + rays[2] + rays[3]; }
     Counters& operator+=(const Counters& o);
+    bool operator==(const Counters&) const = default;
 };
 
 }  // namespace rc

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/ray.h"
@@ -52,6 +53,10 @@ public:
     std::vector<std::uint8_t> rgb8() const;
     int width() const { return width_; }
     int height() const { return height_; }
+    /// The fixed-point sums of the rows held, 3 per pixel, row after row: what a
+    /// checkpoint of a render keeps (ImageSnapshot).
+    std::span<const std::int64_t> sums() const { return sum_; }
+    std::span<std::int64_t> sums() { return sum_; }
 
     /// Largest magnitude of one contribution: far brighter than white, small enough that
     /// 2^11 of them fit the sum. Scenes with absurd light (colours of 1e100) reach it.
