@@ -9,7 +9,7 @@
 
 namespace rcgui {
 
-/// Append-only storage of `T` in blocks of `kBlock` elements.
+/// Append-only storage of `T` in blocks of `kBlock` elements (cut back only by truncate()).
 template <class T, std::size_t kBlock = 8192>
 class BlockVector {
 public:
@@ -17,6 +17,12 @@ public:
         if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<T[]>(kBlock));
         blocks_.back()[size_ % kBlock] = v;
         ++size_;
+    }
+    /// Keeps the first `n` elements (n <= size()), freeing the blocks past them.
+    void truncate(std::size_t n) {
+        if (n >= size_) return;
+        size_ = n;
+        blocks_.resize((n + kBlock - 1) / kBlock);
     }
     const T& operator[](std::size_t i) const { return blocks_[i / kBlock][i % kBlock]; }
     const T& back() const { return (*this)[size_ - 1]; }

@@ -46,14 +46,24 @@ bool SessionController::stepRay() {
     return more;
 }
 
-bool SessionController::start(RunGoal goal, std::int64_t target) {
+bool SessionController::start(RunGoal goal, std::int64_t target) { return launch(goal, target, -1); }
+
+bool SessionController::launch(RunGoal goal, std::int64_t target, std::int64_t rewindTo) {
     if (busy_ || !state_) return false;
     busy_ = true;
     cancel_ = false;
     emit busyChanged(true);
     SessionState* s = state_.get();
     const std::uint64_t run = ++run_;
-    worker_ = QThread::create([this, s, goal, target, run] {
+    worker_ = QThread::create([this, s, goal, target, run, rewindTo] {
+        // [go-back]
+        // Going back: to the latest checkpoint at or before the step, then forwards
+        std::int64_t from = -1;
+        if (rewindTo >= 0) {
+            s->rewindTo(rewindTo);
+            from = s->session().steps();
+        }
+        // [go-back]
         const bool ok = s->runUntil(goal, target, &cancel_, [this, s] {
             // The worker owns the state: it alone may read it, so it makes the snapshot
             const QImage img = imageOf(*s);
@@ -63,6 +73,7 @@ bool SessionController::start(RunGoal goal, std::int64_t target) {
                 if (busy_) emit snapshot(img, steps, progress);
             }, Qt::QueuedConnection);
         });
+        if (from >= 0) replayed_ = s->session().steps() - from;
         workerResult_ = ok;
         // The hand-back; wait() may have taken it already (then run_ has moved on or busy_ is off)
         QMetaObject::invokeMethod(this, [this, ok, run] {
@@ -82,12 +93,9 @@ bool SessionController::stepBack() {
 
 bool SessionController::goToStep(std::int64_t step) {
     if (busy_ || !state_ || step < 0) return false;
-    if (step < state_->session().steps()) {
-        // Backwards: the core is deterministic, so a fresh render replayed to `step` is
-        // the render as it was at that step
-        state_ = std::make_unique<SessionState>(state_->config());
-        emit changed();
-    }
+    // Backwards: the core is deterministic, so the render replayed from a checkpoint
+    // before `step` is the render as it was at that step
+    if (step < state_->session().steps()) return launch(RunGoal::ToStep, step, step);
     return start(RunGoal::ToStep, step);
 }
 

@@ -35,11 +35,14 @@ public:
     bool stepRay();
     /// Runs towards `goal` on a worker thread. False if busy.
     bool start(RunGoal goal, std::int64_t target = 0);
-    /// Rebuilds the render and replays it to one step before the current one, on the
-    /// worker: the core is deterministic, so the state is the one of that step.
+    /// Goes back one step, on the worker: back to the latest checkpoint before it, then
+    /// forwards. The core is deterministic, so the state is the one of that step.
     bool stepBack();
-    /// Runs forwards to step `step`, or rebuilds and replays to it when it lies behind.
+    /// Runs forwards to step `step`, or, when it lies behind, goes back to the latest
+    /// checkpoint at or before it and replays the rest (SessionState::rewindTo).
     bool goToStep(std::int64_t step);
+    /// Steps the last step back (or go to step backwards) replayed after its checkpoint.
+    std::int64_t replayed() const { return replayed_; }
     /// Asks the worker to stop; it hands the state back soon after.
     void cancel();
     /// Blocks until the worker has stopped, then takes the state back (emitting
@@ -60,10 +63,13 @@ signals:
 
 private:
     void onWorkerDone(bool completed);
+    /// start(), going back to the last checkpoint at or before `rewindTo` first (-1: not).
+    bool launch(RunGoal goal, std::int64_t target, std::int64_t rewindTo);
     std::unique_ptr<SessionState> state_;
     QThread* worker_ = nullptr;
     std::atomic<bool> cancel_{false};
     std::atomic<bool> workerResult_{false};
+    std::atomic<std::int64_t> replayed_{0};
     std::uint64_t run_ = 0;  ///< the run a queued hand-back belongs to
     bool busy_ = false;
 };

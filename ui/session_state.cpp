@@ -1,5 +1,6 @@
 #include "session_state.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace rcgui {
@@ -20,10 +21,12 @@ SessionState::SessionState(SessionConfig config)
       session_(makeSession(config_)),
       camera_(config_.scene->camera, session_->width(), session_->height()),
       recorder_(session_->width(), session_->height(), &session_->order()),
-      beams_(session_->width(), session_->height()) {
+      beams_(session_->width(), session_->height()),
+      checkpoints_(config_.checkpointEvery) {
     session_->addSink(&recorder_);
     session_->addSink(&beams_);
     sample();
+    checkpoint();
 }
 
 SessionState::~SessionState() {
@@ -41,9 +44,39 @@ void SessionState::sample() {
     recorder_.sample({session_->steps(), n.hits, n.misses, n.intersectionTests});
 }
 
+void SessionState::checkpoint() {
+    // Into the memory of one dropped, if any: fresh memory is what a checkpoint costs most
+    StepCheckpoint c = checkpoints_.spare();
+    const StepCheckpoint* last = checkpoints_.last();
+    session_->checkpointInto(c.session, last ? &last->session : nullptr);
+    c.recorder = recorder_.mark();
+    c.beams = beams_.mark();
+    checkpoints_.add(std::move(c));
+}
+
+std::int64_t SessionState::rewindTo(std::int64_t step) {
+    // [rewind]
+    // The latest checkpoint at or before the step: the render, its recorder and its
+    // beams go back to it; what is left is replayed by stepping
+    if (step < 0 || step >= session_->steps()) return 0;
+    const StepCheckpoint* c = checkpoints_.backTo(step);
+    if (!c) return 0;  // never: step 0 always has one
+    session_->restore(c->session);
+    recorder_.rollback(c->recorder);
+    beams_.rollback(c->beams);
+    // [rewind]
+    stopEvent_ = -1;
+    fan_.reset();
+    serial_ = nextSerial++;
+    return step - c->steps();
+}
+
 bool SessionState::step() {
     const bool more = session_->step();
-    if (more) sample();
+    if (more) {
+        sample();
+        if (checkpoints_.due(session_->steps())) checkpoint();
+    }
     return more;
 }
 

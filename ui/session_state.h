@@ -9,6 +9,7 @@
 #include "render/render_session.h"
 #include "sample_fan.h"
 #include "scene/camera.h"
+#include "step_checkpoints.h"
 #include "trace_recorder.h"
 
 namespace rcgui {
@@ -17,6 +18,8 @@ namespace rcgui {
 struct SessionConfig {
     std::shared_ptr<const rc::Scene> scene;
     rc::RenderOptions options;
+    /// Steps between checkpoints (StepCheckpoints), which Step back goes back to.
+    std::int64_t checkpointEvery = StepCheckpoints::kEvery;
 };
 
 /// How far a multi-step run goes.
@@ -45,6 +48,13 @@ public:
     bool runUntil(RunGoal goal, std::int64_t target, const std::atomic<bool>* cancel = nullptr,
                   const std::function<void()>& tick = {});
 
+    /// Goes back to the latest checkpoint at or before `step` (< steps()): the render, its
+    /// recorder and its beams as they were there. Returns the steps left to replay to
+    /// reach `step` (fewer than checkpoints().every()); the state takes a new serial().
+    std::int64_t rewindTo(std::int64_t step);
+    const StepCheckpoints& checkpoints() const { return checkpoints_; }
+    std::string checkpointSummary() const { return checkpoints_.summary(); }
+
     /// The recorded event that met the last run's NextMiss/NextDeferral goal, else -1.
     int stopEvent() const { return stopEvent_; }
 
@@ -68,12 +78,14 @@ private:
     std::uint64_t serial_;
     int stopEvent_ = -1;
     void sample();
+    void checkpoint();
     SessionConfig config_;
     std::unique_ptr<rc::RenderSession> session_;
     rc::RayGenerator camera_;
     TraceRecorder recorder_;
     rc::BeamTreeBuilder beams_;
     mutable std::unique_ptr<SampleFan> fan_;
+    StepCheckpoints checkpoints_;
 };
 
 }  // namespace rcgui

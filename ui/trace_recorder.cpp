@@ -1,6 +1,7 @@
 #include "trace_recorder.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace rcgui {
 
@@ -60,6 +61,33 @@ void TraceRecorder::sample(const StatSample& s) {
         samples_.swap(kept);
         sampleEvery_ *= 2;
     }
+}
+
+TraceRecorder::Mark TraceRecorder::mark() const {
+    return {events_.size(), misses_.size(), last_, lastCommitted_, samples_, sampleEvery_};
+}
+
+void TraceRecorder::rollback(const Mark& m) {
+    if (m.events > events_.size() || m.misses > misses_.size())
+        throw std::invalid_argument("TraceRecorder::rollback: a mark of another recorder");
+    // Take each event back, newest first: what onEvent() added, it subtracts
+    for (std::size_t i = events_.size(); i-- > m.events;) {
+        const EventRecord& r = events_[i];
+        const int p = r.pixel;
+        lastOfPixel_[p] = r.previous;
+        tests_[p] -= r.tests;
+        if (r.deferred()) continue;
+        if (firstVisit_[p] == r.step) firstVisit_[p] = -1;
+        if (r.rayDecision() == rc::Decision::Hit) --hits_[p];
+        // The first miss goes last: with it goes the pixel's miss reason
+        if (r.rayDecision() == rc::Decision::Miss && --missCount_[p] == 0) missReason_[p] = 0;
+    }
+    events_.truncate(m.events);
+    misses_.truncate(m.misses);
+    last_ = m.last;
+    lastCommitted_ = m.lastCommitted;
+    samples_ = m.samples;
+    sampleEvery_ = m.sampleEvery;
 }
 
 }  // namespace rcgui

@@ -60,6 +60,20 @@ public:
     void sample(const StatSample& s);
     const std::vector<StatSample>& samples() const { return samples_; }
 
+    /// The recorder at a checkpoint: events are a log that only grows, so it keeps their
+    /// count (and what is not a log: the last events and the chart samples).
+    struct Mark {
+        std::size_t events = 0, misses = 0;
+        std::optional<rc::TraceEvent> last, lastCommitted;
+        std::vector<StatSample> samples;
+        std::int64_t sampleEvery = 1;
+        std::size_t bytes() const { return sizeof(Mark) + samples.size() * sizeof(StatSample); }
+    };
+    Mark mark() const;
+    /// Forgets the events recorded after `m` (a mark of this recorder, taken before them):
+    /// the per-pixel tallies are taken back event by event, newest first.
+    void rollback(const Mark& m);
+
 private:
     int width_, height_;
     const rc::RayOrder* order_;

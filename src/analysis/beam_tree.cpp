@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace rc {
 
@@ -99,6 +100,26 @@ BeamTreeStats BeamTreeBuilder::build() const {
     s.coherence = s.nodes > 0 ? s.averageRayTreeSize / double(s.nodes) : 0.0;
     // [coherence]
     return s;
+}
+
+BeamTreeBuilder::Mark BeamTreeBuilder::mark() const {
+    Mark m;
+    m.rays = rays_;
+    for (const auto& [path, rays] : rays_by_path_) m.paths.emplace_back(path, rays.size());
+    return m;
+}
+
+void BeamTreeBuilder::rollback(const Mark& m) {
+    std::unordered_map<int, std::vector<Ray>> kept;
+    for (const auto& [path, size] : m.paths) {
+        auto it = rays_by_path_.find(path);
+        if (it == rays_by_path_.end() || it->second.size() < size)
+            throw std::invalid_argument("BeamTreeBuilder::rollback: a mark of another builder");
+        it->second.resize(size);
+        kept.emplace(path, std::move(it->second));
+    }
+    rays_by_path_ = std::move(kept);
+    rays_ = m.rays;
 }
 
 }  // namespace rc

@@ -9,6 +9,7 @@
 /// connected group is one beam-tree node.
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "trace/trace_event.h"
@@ -40,6 +41,16 @@ public:
     std::vector<int> paths() const;
     /// Rays held (for checking that memory follows the rays, not paths x pixels).
     std::int64_t storedRays() const { return rays_; }
+
+    /// How many rays each path held at some moment: the rays are a log that only grows,
+    /// so a checkpoint of a stepping render keeps its length.
+    struct Mark {
+        std::int64_t rays = 0;
+        std::vector<std::pair<int, std::size_t>> paths;  ///< (path, rays recorded at it)
+    };
+    Mark mark() const;
+    /// Forgets the rays recorded after `m` (a mark of this builder, taken before them).
+    void rollback(const Mark& m);
 
 private:
     /// One recorded ray: its pixel and its beam key (origin object and side; hit object).

@@ -130,6 +130,12 @@ bool RenderSession::run(const std::function<bool(double)>& progress) {
 
 SessionCheckpoint RenderSession::checkpoint(const SessionCheckpoint* previous) const {
     SessionCheckpoint c;
+    checkpointInto(c, previous);
+    return c;
+}
+
+void RenderSession::checkpointInto(SessionCheckpoint& c, const SessionCheckpoint* previous) const {
+    if (&c == previous) throw std::invalid_argument("checkpointInto: the checkpoint it shares scanlines with");
     c.session = this;
     c.steps = steps_;
     c.primaries = primaries_;
@@ -137,9 +143,10 @@ SessionCheckpoint RenderSession::checkpoint(const SessionCheckpoint* previous) c
     c.counters = counters_;
     c.paths = paths_;
     c.image = ImageSnapshot(image_, previous ? &previous->image : nullptr);
-    c.order = order_->clone();
+    // An old clone of the order takes the order's state into the memory it has
+    if (c.order && c.order->kind() == order_->kind()) c.order->restore(*order_);
+    else c.order = order_->clone();
     c.strategy = strategy_->checkpoint();
-    return c;
 }
 
 void RenderSession::restore(const SessionCheckpoint& c) {

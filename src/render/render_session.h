@@ -90,6 +90,9 @@ public:
     /// equal to those of `previous` (an earlier checkpoint of this session, or null) are
     /// shared with it.
     SessionCheckpoint checkpoint(const SessionCheckpoint* previous = nullptr) const;
+    /// checkpoint() into `c`, an old checkpoint of this session no longer wanted: its
+    /// memory is reused (fresh memory is what a checkpoint costs most).
+    void checkpointInto(SessionCheckpoint& c, const SessionCheckpoint* previous) const;
     /// Goes back to a checkpoint this session took, exactly: stepping on from it traces
     /// the same rays, with the same answers, counters and image, as it did the first time.
     /// The session must be at or past it (the blocker lists are kept as a log that only
