@@ -1,0 +1,171 @@
+// GUI tests: Step back and Go to step backwards go back to a checkpoint and replay a few
+// steps, and leave the window as stepping forwards to the same step does.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <bit>
+
+#include <QApplication>
+
+#include "main_window.h"
+#include "ray_focus.h"
+#include "stats_panel.h"
+#include "step_checkpoints.h"
+
+using namespace rcgui;
+
+namespace {
+
+/// A window on cube:4, 128x128, blocker+ cache (or another), breadth-first: about 43,000 steps.
+struct Window {
+    MainWindow w;
+    explicit Window(rc::CacheKind cache = rc::CacheKind::BlockerPlus, rc::OrderKind order = rc::OrderKind::BreadthFirst) {
+        w.setCache(cache);
+        w.setOrder(order);
+        REQUIRE(w.loadScene("cube:4"));
+        w.setImageSize(128, 128);
+        w.resize(1000, 800);
+        w.show();
+        QApplication::processEvents();
+    }
+    SessionState& state() {
+        SessionState* s = w.controller().state();
+        REQUIRE(s != nullptr);
+        return *s;
+    }
+    void goTo(std::int64_t step) {
+        w.goToStep(step);
+        w.controller().wait();
+        REQUIRE(state().session().steps() == step);
+        w.refresh();
+    }
+};
+
+/// What the window shows: image, statistics, the ray in focus, the recorder's tallies.
+void requireSame(Window& a, Window& b) {
+    const SessionState& s = a.state();
+    const SessionState& t = b.state();
+    REQUIRE(s.session().steps() == t.session().steps());
+    REQUIRE(SessionController::imageOf(s) == SessionController::imageOf(t));
+    REQUIRE(s.session().counters() == t.session().counters());
+    REQUIRE(a.w.statsPanel()->summaryText() == b.w.statsPanel()->summaryText());
+    // The ray in focus
+    const auto f = RayFocus::of(s, a.w.selection()), g = RayFocus::of(t, b.w.selection());
+    REQUIRE(f.has_value() == g.has_value());
+    if (f) {
+        REQUIRE(f->event == g->event);
+        REQUIRE(f->pixel == g->pixel);
+        REQUIRE(f->node == g->node);
+        REQUIRE(f->hit == g->hit);
+        REQUIRE(f->t == g->t);
+        REQUIRE(f->decision == g->decision);
+        REQUIRE(f->reason == g->reason);
+        REQUIRE(f->tests == g->tests);
+    }
+    // The recorder, event by event and pixel by pixel
+    const TraceRecorder& r = s.recorder();
+    const TraceRecorder& q = t.recorder();
+    REQUIRE(r.events().size() == q.events().size());
+    REQUIRE(r.misses().size() == q.misses().size());
+    int differ = 0;
+    for (int p = 0; p < s.width() * s.height(); ++p)
+        if (r.lastEventOf(p) != q.lastEventOf(p) || r.testsAt(p) != q.testsAt(p) || r.hitsAt(p) != q.hitsAt(p) ||
+            r.missesAt(p) != q.missesAt(p) || r.firstVisit(p) != q.firstVisit(p) ||
+            r.missReasonAt(p) != q.missReasonAt(p))
+            ++differ;
+    REQUIRE(differ == 0);
+    REQUIRE(r.samples().size() == q.samples().size());
+    for (std::size_t i = 0; i < r.samples().size(); ++i) {
+        REQUIRE(r.samples()[i].step == q.samples()[i].step);
+        REQUIRE(r.samples()[i].tests == q.samples()[i].tests);
+    }
+    const rc::BeamTreeStats beams = s.beams().build(), direct = t.beams().build();
+    REQUIRE(beams.nodes == direct.nodes);
+    REQUIRE(beams.averageRayTreeSize == direct.averageRayTreeSize);
+}
+
+}  // namespace
+
+TEST_CASE("Step back late in a render replays fewer steps than a checkpoint spacing", "[gui][step]") {
+    for (rc::OrderKind order : {rc::OrderKind::BreadthFirst, rc::OrderKind::Scanline}) {
+        Window back(rc::CacheKind::BlockerPlus, order);
+        back.w.runToEnd();
+        back.w.controller().wait();
+        const std::int64_t end = back.state().session().steps();
+        const std::int64_t every = back.state().checkpoints().every();
+        REQUIRE(end > 4 * every);  // late: many spacings in
+        // Three steps back from the end, each replaying from a checkpoint
+        for (int i = 1; i <= 3; ++i) {
+            back.w.stepBack();
+            back.w.controller().wait();
+            REQUIRE(back.state().session().steps() == end - i);
+            REQUIRE(back.w.controller().replayed() < every);
+            REQUIRE(back.w.controller().replayed() == (end - i) % every);
+        }
+        back.w.refresh();
+        Window forward(rc::CacheKind::BlockerPlus, order);
+        forward.goTo(end - 3);
+        requireSame(back, forward);
+    }
+}
+
+TEST_CASE("Go to step backwards goes back to a checkpoint, and on again is the render as it was", "[gui][step]") {
+    Window w(rc::CacheKind::Blocker);
+    w.goTo(41234);
+    const std::int64_t every = w.state().checkpoints().every();
+    const std::size_t kept = w.state().checkpoints().size();
+    REQUIRE(kept < std::size_t(41234 / every) + 2);
+    // Far back: at most about half the way is replayed
+    w.goTo(12345);
+    REQUIRE(w.w.controller().replayed() < (41234 - 12345) / 2);
+    Window forward(rc::CacheKind::Blocker);
+    forward.goTo(12345);
+    requireSame(w, forward);
+    // Forwards again from there, then back a little
+    w.goTo(30001);
+    w.goTo(30000);
+    REQUIRE(w.w.controller().replayed() == 0);  // a checkpoint at 30000
+    forward.goTo(30000);
+    requireSame(w, forward);
+}
+
+TEST_CASE("Step back with a pixel selected keeps the same ray in focus as stepping there", "[gui][step]") {
+    Window back;
+    back.goTo(25000);
+    const int pixel = back.state().recorder().lastCommitted()->task.pixel;
+    back.w.selectPixel(pixel % 128, pixel / 128);
+    back.w.stepBack();
+    back.w.controller().wait();
+    back.w.refresh();
+    REQUIRE(back.w.controller().replayed() < back.state().checkpoints().every());
+    Window forward;
+    forward.goTo(24999);
+    forward.w.selectPixel(pixel % 128, pixel / 128);
+    forward.w.refresh();
+    REQUIRE(RayFocus::of(back.state(), back.w.selection())->selected);
+    requireSame(back, forward);
+}
+
+TEST_CASE("Checkpoints thin out geometrically behind the render", "[gui][step]") {
+    StepCheckpoints list(1);
+    for (std::int64_t m = 0; m <= 1000; ++m) {
+        StepCheckpoint c;
+        c.session.steps = m;
+        list.add(std::move(c));
+        const std::vector<std::int64_t> kept = list.steps();
+        REQUIRE(kept.front() == 0);
+        REQUIRE(kept.back() == m);
+        // Few: about two per doubling of the distance
+        REQUIRE(kept.size() <= std::size_t(2 * std::bit_width(std::uint64_t(m)) + 3));
+        // The gap before a checkpoint at distance d from the newest is at most d / 2 (the
+        // last ones one apart)
+        for (std::size_t i = 1; i < kept.size(); ++i)
+            REQUIRE(kept[i] - kept[i - 1] <= std::max<std::int64_t>(1, (m - kept[i - 1]) / 2));
+    }
+    // Going back drops the later ones
+    const StepCheckpoint* c = list.backTo(700);
+    REQUIRE(c != nullptr);
+    REQUIRE(c->steps() <= 700);
+    REQUIRE(c->steps() > 700 - 300 / 2);
+    REQUIRE(list.steps().back() == c->steps());
+}
