@@ -1,6 +1,6 @@
 // How long Step back and Go to step (backwards) take in the GUI's session controller, late
 // in a render. Not a test: run it by hand, e.g.
-//   build/ui/raycache_step_back_bench cube:5 512 blocker bfs
+//   build/ui/raycache_step_back_bench cube:5 512 blocker bfs [spacing]
 // It prints the time a run to the end takes with and without checkpoints, the time of each
 // step back, and the memory the checkpoints take.
 #include <chrono>
@@ -24,9 +24,10 @@ int main(int argc, char** argv) {
     o.width = o.height = size;
     o.cache = rc::parseCacheKind(argc > 3 ? argv[3] : "blocker").value_or(rc::CacheKind::Blocker);
     o.order = rc::parseOrderKind(argc > 4 ? argv[4] : "bfs").value_or(rc::OrderKind::BreadthFirst);
+    const std::int64_t spacing = argc > 5 ? std::atoll(argv[5]) : StepCheckpoints::kEvery;
     auto scene = std::make_shared<const rc::Scene>(rc::loadScene(spec));
     // The cost of taking checkpoints: the same run with none after step 0
-    for (std::int64_t every : {std::int64_t(1) << 40, StepCheckpoints::kEvery, std::int64_t(1) << 40, StepCheckpoints::kEvery}) {
+    for (std::int64_t every : {std::int64_t(1) << 40, spacing, std::int64_t(1) << 40, spacing}) {
         SessionState s({scene, o, every});
         auto t = Clock::now();
         s.runUntil(RunGoal::ToEnd, 0);
@@ -34,7 +35,7 @@ int main(int argc, char** argv) {
                     std::chrono::duration<double>(Clock::now() - t).count(), s.checkpointSummary().c_str());
     }
     SessionController c;
-    c.reset({scene, o});
+    c.reset({scene, o, spacing});
     auto t0 = Clock::now();
     c.start(RunGoal::ToEnd);
     c.wait();

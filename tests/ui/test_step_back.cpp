@@ -16,14 +16,15 @@ using namespace rcgui;
 
 namespace {
 
-/// A window on cube:4, 128x128, blocker+ cache (or another), breadth-first: about 43,000 steps.
+/// A window on cube:5, 256x256, blocker+ cache (or another), breadth-first: about 180,000
+/// steps, several checkpoint spacings.
 struct Window {
     MainWindow w;
     explicit Window(rc::CacheKind cache = rc::CacheKind::BlockerPlus, rc::OrderKind order = rc::OrderKind::BreadthFirst) {
         w.setCache(cache);
         w.setOrder(order);
-        REQUIRE(w.loadScene("cube:4"));
-        w.setImageSize(128, 128);
+        REQUIRE(w.loadScene("cube:5"));
+        w.setImageSize(256, 256);
         w.resize(1000, 800);
         w.show();
         QApplication::processEvents();
@@ -111,36 +112,37 @@ TEST_CASE("Step back late in a render replays fewer steps than a checkpoint spac
 
 TEST_CASE("Go to step backwards goes back to a checkpoint, and on again is the render as it was", "[gui][step]") {
     Window w(rc::CacheKind::Blocker);
-    w.goTo(41234);
     const std::int64_t every = w.state().checkpoints().every();
-    const std::size_t kept = w.state().checkpoints().size();
-    REQUIRE(kept < std::size_t(41234 / every) + 2);
-    // Far back: at most about half the way is replayed
-    w.goTo(12345);
-    REQUIRE(w.w.controller().replayed() < (41234 - 12345) / 2);
+    const std::int64_t late = 4 * every + 1234, early = every / 3;
+    w.goTo(late);
+    REQUIRE(w.state().checkpoints().size() == 5);  // steps 0, every, ..., 4 every
+    // Far back: less than the way is replayed (here from step 0)
+    w.goTo(early);
+    REQUIRE(w.w.controller().replayed() == early);
     Window forward(rc::CacheKind::Blocker);
-    forward.goTo(12345);
+    forward.goTo(early);
     requireSame(w, forward);
-    // Forwards again from there, then back a little
-    w.goTo(30001);
-    w.goTo(30000);
-    REQUIRE(w.w.controller().replayed() == 0);  // a checkpoint at 30000
-    forward.goTo(30000);
+    // Forwards again from there, then back a step onto a checkpoint
+    w.goTo(3 * every + 1);
+    w.goTo(3 * every);
+    REQUIRE(w.w.controller().replayed() == 0);
+    forward.goTo(3 * every);
     requireSame(w, forward);
 }
 
 TEST_CASE("Step back with a pixel selected keeps the same ray in focus as stepping there", "[gui][step]") {
     Window back;
-    back.goTo(25000);
+    const std::int64_t at = back.state().checkpoints().every() * 2 + 5000;
+    back.goTo(at);
     const int pixel = back.state().recorder().lastCommitted()->task.pixel;
-    back.w.selectPixel(pixel % 128, pixel / 128);
+    back.w.selectPixel(pixel % 256, pixel / 256);
     back.w.stepBack();
     back.w.controller().wait();
     back.w.refresh();
     REQUIRE(back.w.controller().replayed() < back.state().checkpoints().every());
     Window forward;
-    forward.goTo(24999);
-    forward.w.selectPixel(pixel % 128, pixel / 128);
+    forward.goTo(at - 1);
+    forward.w.selectPixel(pixel % 256, pixel / 256);
     forward.w.refresh();
     REQUIRE(RayFocus::of(back.state(), back.w.selection())->selected);
     requireSame(back, forward);
