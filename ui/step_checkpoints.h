@@ -27,18 +27,19 @@ struct StepCheckpoint {
 /// replays at most about D / 2, and a render of n spacings keeps about 2 log2 n + 2
 /// checkpoints. Step 0 is always kept.
 ///
-/// Measured (`build/ui/raycache_step_back_bench cube:5 512 blocker bfs SPACING`, 717,145
-/// steps, on the 2-core machine shared with other jobs): a checkpoint holds 0.3 to 3.5 MB
-/// (the fill's queued rays, 144 bytes each, and the scanlines of its band), and fresh memory
-/// there costs about 7 ms a megabyte to touch, so checkpoints reuse the memory of those
-/// they drop. Every 10,000 steps a run to the end took 0.27 s without checkpoints and
-/// 0.49 s with them, and a step back at most 7 ms; every 40,000 steps the run took the same
-/// 0.27 s, and a step back at most 18 ms (the render replays about 2.5 million steps a
-/// second).
+/// Measured (`build/ui/raycache_step_back_bench cube:5 512 CACHE ORDER SPACING`, 717,145
+/// steps, on the 2-core machine shared with other jobs, whose load makes times swing by 2x):
+/// a checkpoint holds 0.3 to 3.5 MB (the fill's queued rays, 144 bytes each, and the
+/// scanlines of its band), and fresh memory there costs about 7 ms a megabyte to touch, so
+/// checkpoints reuse the memory of those they drop. Every 10,000 steps, blocker/bfs ran to
+/// the end in 0.49 s against 0.27 s without checkpoints. Every 40,000 steps the run cost
+/// nothing measurable, but a step back took up to 76 ms under load (cylinder/scanline).
+/// Every 20,000 steps: the run 0.95 s against 0.72 s (blocker/bfs) and 0.84 s against 0.80 s
+/// (cylinder/scanline), a step back at most 27 ms. 20,000 it is: the margin under 100 ms.
 class StepCheckpoints {
 public:
-    /// Spacing (see the measurements above): 40,000 steps replay in about 16 ms.
-    static constexpr std::int64_t kEvery = 40000;
+    /// Spacing (see the measurements above).
+    static constexpr std::int64_t kEvery = 20000;
 
     explicit StepCheckpoints(std::int64_t every = kEvery) : every_(every) {}
 
