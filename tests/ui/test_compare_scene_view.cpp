@@ -16,6 +16,7 @@
 #include "heatmap_builder.h"
 #include "image_view.h"
 #include "main_window.h"
+#include "window_fixture.h"
 #include "scene/builtin_scenes.h"
 #include "scene_view.h"
 #include "stats_panel.h"
@@ -33,15 +34,9 @@ struct Window {
         w.setCache(cache);
         w.setOrder(order);
         REQUIRE(w.loadScene(scene));
-        w.resize(1400, 900);
-        w.show();
-        QApplication::processEvents();
+        rcgui::testing::showAt(w, 1400, 900);
     }
-    SessionState& state() {
-        SessionState* s = w.controller().state();
-        REQUIRE(s != nullptr);
-        return *s;
-    }
+    SessionState& state() { return rcgui::testing::stateOf(w); }
     SessionState& compared() {
         w.compareController().wait();
         SessionState* s = w.compareController().state();

@@ -17,6 +17,7 @@
 #include "gui_options.h"
 #include "image_view.h"
 #include "main_window.h"
+#include "window_fixture.h"
 #include "projector.h"
 #include "ray_focus.h"
 #include "ray_tree_panel.h"
@@ -37,16 +38,10 @@ struct Window {
         w.setCache(cache);
         w.setOrder(order);
         REQUIRE(w.loadScene(scene));
-        w.resize(1000, 800);
-        w.show();
-        QApplication::processEvents();
+        rcgui::testing::showAt(w, 1000, 800);
         w.imageView()->fit();
     }
-    SessionState& state() {
-        SessionState* s = w.controller().state();
-        REQUIRE(s != nullptr);
-        return *s;
-    }
+    SessionState& state() { return rcgui::testing::stateOf(w); }
     void paint() {
         w.refresh();
         w.imageView()->grab();

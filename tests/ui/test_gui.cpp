@@ -16,6 +16,7 @@
 #include "gui_options.h"
 #include "image_view.h"
 #include "main_window.h"
+#include "window_fixture.h"
 #include "palette.h"
 #include "projector.h"
 #include "ray_focus.h"
@@ -36,16 +37,10 @@ struct Fixture {
         w.setCache(cache);
         w.setOrder(order);
         REQUIRE(w.loadScene(scene));
-        w.resize(1200, 900);
-        w.show();
-        QApplication::processEvents();
+        rcgui::testing::showAt(w, 1200, 900);
         w.imageView()->fit();
     }
-    SessionState& state() {
-        SessionState* s = w.controller().state();
-        REQUIRE(s != nullptr);
-        return *s;
-    }
+    SessionState& state() { return rcgui::testing::stateOf(w); }
     QImage grabView() {
         w.refresh();
         QApplication::processEvents();

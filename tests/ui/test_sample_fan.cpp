@@ -15,6 +15,7 @@
 #include "heatmap_builder.h"
 #include "image_view.h"
 #include "main_window.h"
+#include "window_fixture.h"
 #include "palette.h"
 #include "sample_fan.h"
 #include "scene_view.h"
@@ -37,16 +38,10 @@ struct SampledWindow {
         QString errors;
         QTextStream err(&errors);
         REQUIRE(applyOptions(w, o, err));
-        w.resize(1200, 900);
-        w.show();
-        QApplication::processEvents();
+        rcgui::testing::showAt(w, 1200, 900);
         w.imageView()->fit();
     }
-    SessionState& state() {
-        SessionState* s = w.controller().state();
-        REQUIRE(s != nullptr);
-        return *s;
-    }
+    SessionState& state() { return rcgui::testing::stateOf(w); }
 };
 
 const QStringList kSoft{"cube:4", "--cache", "blocker", "--order", "scanline", "--spp", "4", "--light-radius", "0.3",

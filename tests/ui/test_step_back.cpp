@@ -8,6 +8,7 @@
 #include <QApplication>
 
 #include "main_window.h"
+#include "window_fixture.h"
 #include "ray_focus.h"
 #include "stats_panel.h"
 #include "step_checkpoints.h"
@@ -25,15 +26,9 @@ struct Window {
         w.setOrder(order);
         REQUIRE(w.loadScene("cube:5"));
         w.setImageSize(256, 256);
-        w.resize(1000, 800);
-        w.show();
-        QApplication::processEvents();
+        rcgui::testing::showAt(w, 1000, 800);
     }
-    SessionState& state() {
-        SessionState* s = w.controller().state();
-        REQUIRE(s != nullptr);
-        return *s;
-    }
+    SessionState& state() { return rcgui::testing::stateOf(w); }
     void goTo(std::int64_t step) {
         w.goToStep(step);
         w.controller().wait();
