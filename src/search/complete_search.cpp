@@ -53,15 +53,6 @@ void LinearSearch::cull(SphereCull& c) const {
     }
 }
 
-double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
-    if (regions_) return CompleteSearch::clearance(a, b, skip, skipToo, cap);
-    const Vec3 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    double c = cap;
-    all_.clearance(a, ab, len2 > 0.0 ? 1.0 / len2 : 0.0, skip, skipToo, 0, all_.size(), c);
-    return c;
-}
-
 LinearSearch::LinearSearch(const Scene& scene, Regions regions) : CompleteSearch(scene) {
     for (int id = 0; id < scene.size(); ++id) all_.add(scene, id);
     if (regions == Regions::Hierarchy) regions_ = std::make_unique<const BoundingVolumeHierarchy>(scene);

@@ -76,7 +76,6 @@ public:
     ~LinearSearch() override;
     Answer nearest(const Query& q, Counters& n) const override;
     void cull(SphereCull& c) const override;
-    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override;
     std::string name() const override { return "linear"; }
     bool cheap() const override { return false; }
 

@@ -48,18 +48,10 @@ public:
         // [sphere-batch]
     }
 
-    /// The least distance from segment a-b (ab = b - a, invLen2 = 1 / |ab|^2, 0 for a
-    /// point) to the bounding spheres of objects [begin, end), `skip` and `skipToo` left out,
-    /// lowered into `clearance`. (How a cylinder of safety is built by a scan.)
-    void clearance(const Vec3& a, const Vec3& ab, double invLen2, int skip, int skipToo, std::size_t begin,
-                   std::size_t end, double& clearance) const;
-
 private:
     std::vector<int> ids_;
-    std::vector<double> idValues_;  ///< ids_ as doubles, compared beside the distances
     std::vector<double> x_, y_, z_;
     std::vector<double> radius2_;  ///< r * r; negative for a polygon or a cone
-    std::vector<double> bound_;    ///< the bounding sphere's radius
 };
 
 }  // namespace rc
