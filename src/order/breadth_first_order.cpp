@@ -80,7 +80,7 @@ std::optional<Pick> BreadthFirstOrder::next() {
             inflight_ = queue_.front();
             queue_.pop_front();
             inflightSeed_ = false;
-            return Pick{tasks[slot_[inflight_]], cheapTests_ ? LookupMode::CheapOnly : LookupMode::Full};
+            return Pick{&tasks[std::size_t(slot_[inflight_])], cheapTests_ ? LookupMode::CheapOnly : LookupMode::Full};
         }
         // The region is finished: a deferred ray, else the next untouched one, seeds the next
         int seed = -1;
@@ -103,7 +103,7 @@ std::optional<Pick> BreadthFirstOrder::next() {
         state_[seed] = Queued;
         inflight_ = seed;
         inflightSeed_ = true;
-        return Pick{tasks[slot_[seed]], LookupMode::Full};
+        return Pick{&tasks[std::size_t(slot_[seed])], LookupMode::Full};
     }
 }
 

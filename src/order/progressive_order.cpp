@@ -18,12 +18,12 @@ std::optional<Pick> ProgressiveOrder::next() {
         nextRow_ = end;
         peak_ = std::max(peak_, queue_.size());
     }
-    Pick p{std::move(queue_.front()), LookupMode::Full};
-    queue_.pop_front();
-    return p;
+    // It stays in front until it is traced
+    return Pick{&queue_.front(), LookupMode::Full};
 }
 
 void ProgressiveOrder::committed(const RayTask&, Decision, std::vector<RayTask>& children) {
+    queue_.pop_front();
     for (RayTask& c : children) queue_.push_back(std::move(c));
     peak_ = std::max(peak_, queue_.size());
 }

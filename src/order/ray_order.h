@@ -22,9 +22,11 @@ enum class OrderKind {
 std::string_view toString(OrderKind k);
 std::optional<OrderKind> parseOrderKind(std::string_view s);
 
-/// The next ray to trace and how far its lookup may go.
+/// The next ray to trace and how far its lookup may go. The task stays where the order
+/// keeps it, unmoved until the order hears what became of it (committed() or
+/// deferred()): handing out a copy cost a store of 144 bytes per ray, and its reload.
 struct Pick {
-    RayTask task;
+    const RayTask* task = nullptr;
     LookupMode mode = LookupMode::Full;
 };
 
@@ -45,7 +47,8 @@ public:
     virtual OrderKind kind() const = 0;
     /// The next ray, or nothing when the image is done.
     virtual std::optional<Pick> next() = 0;
-    /// The ray last picked was traced; `children` are the rays it spawned.
+    /// The ray last picked was traced; `children` are the rays it spawned. `task` is the
+    /// picked task itself: the order may drop it here, so it is not read after.
     virtual void committed(const RayTask& task, Decision d, std::vector<RayTask>& children) = 0;
     /// The ray last picked could not be answered cheaply: it waits.
     virtual void deferred(const RayTask&) {}

@@ -13,12 +13,12 @@ std::optional<Pick> ScanlineOrder::next() {
             ++nextPixel_;
         }
     }
-    Pick p{std::move(stack_.back()), LookupMode::Full};
-    stack_.pop_back();
-    return p;
+    // It stays on top until it is traced
+    return Pick{&stack_.back(), LookupMode::Full};
 }
 
 void ScanlineOrder::committed(const RayTask&, Decision, std::vector<RayTask>& children) {
+    stack_.pop_back();
     // Depth first: the children go on the stack, the first spawned on top
     for (auto it = children.rbegin(); it != children.rend(); ++it) stack_.push_back(std::move(*it));
     peak_ = std::max(peak_, stack_.size());

@@ -73,7 +73,7 @@ void RenderSession::removeSink(TraceSink* sink) {
 bool RenderSession::step() {
     if (done_) return false;
     while (std::optional<Pick> pick = order_->next()) {
-        const RayTask& task = pick->task;
+        const RayTask& task = *pick->task;
         CacheEntry& entry = paths_.entry(task.node);
         // [session-step]
         // Ask the cache at this ray's path in the cache tree

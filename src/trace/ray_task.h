@@ -11,6 +11,9 @@ namespace rc {
 /// weight (the product of Ks and Kt along its path) and adds what it finds straight into
 /// its pixel: no recursion, so rays can be traced in any order.
 struct RayTask {
+    /// Its fields start as below, and nothing else is zeroed first (a task is made for
+    /// every ray: `emplace_back()` would otherwise clear it all before setting it)
+    RayTask() {}
     Query query;
     int pixel = 0;    ///< y * width + x
     int node = 0;     ///< its path in the cache tree (set by the render from `sample`)

@@ -34,14 +34,14 @@ long libraryRegions(int width, int height, int band, const std::vector<int>& key
     int cached = INT_MIN;
     std::vector<rc::RayTask> none;
     while (std::optional<rc::Pick> pick = order.next()) {
-        const int p = pick->task.pixel;
+        const int p = pick->task->pixel;
         const bool hit = key[p] == cached;
         if (pick->mode == rc::LookupMode::CheapOnly && !hit) {
-            order.deferred(pick->task);
+            order.deferred(*pick->task);
             continue;
         }
         if (!hit) cached = key[p];  // a full lookup that misses searches and reloads
-        order.committed(pick->task, hit ? rc::Decision::Hit : rc::Decision::Miss, none);
+        order.committed(*pick->task, hit ? rc::Decision::Hit : rc::Decision::Miss, none);
     }
     return long(order.regions());
 }
