@@ -55,7 +55,10 @@ bool BlockerCache::recall(const Query& q, CacheEntry& e) {
     };
     if (e.state == CacheEntry::State::Loaded) at(e.origin) = e;
     const CacheEntry& kept = at(q.origin);
-    if (kept.state != CacheEntry::State::Loaded || !(kept.origin == q.origin)) return false;
+    // Only an entry that hit something comes back: an empty one brings a cylinder to
+    // build, which the new ray mostly leaves (cube:8 at 512x512, bfs: 25,000 more
+    // cylinders built for 63 fewer complete searches)
+    if (kept.state != CacheEntry::State::Loaded || !(kept.origin == q.origin) || kept.object < 0) return false;
     e = kept;
     return true;
     // [recall-by-origin]

@@ -21,8 +21,8 @@ namespace rc {
 ///   lists kept nearest first and left early once a nearer hit is known; rays that hit
 ///   nothing keep the cone of directions around the last such ray that no object's
 ///   silhouette enters (seen from anywhere in the origin's sphere); entries remembered per
-///   origin, so a ray from an object met before is answered from what that object's rays
-///   last found instead of a complete search; large polygons cut into tiles, each its own
+///   origin, so a ray from an object met before tries the object its rays last hit
+///   before a complete search; large polygons cut into tiles, each its own
 ///   site (BlockerLists); and, in front of a grid or a hierarchy, an entry steps aside
 ///   (searches) where testing its list would cost more than the search.
 class BlockerCache final : public CacheStrategy {
