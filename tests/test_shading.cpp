@@ -97,7 +97,7 @@ TEST_CASE("the Phong highlight peaks in the mirror direction at Ks", "[shading][
     const double c = 1.0 / std::sqrt(2.0);
     auto unblocked = [&](const Vec3& from) {
         const Vec3 d = glm::normalize(Vec3(0.0, 0.0, 1.0) - from);
-        return child(shadeHit(s, Ray{from, d}, glm::length(Vec3(0.0, 0.0, 1.0) - from)), RayKind::Shadow).unblocked;
+        return child(shadeHit(s, Ray{from, d}, glm::length(Vec3(0.0, 0.0, 1.0) - from)), RayKind::Shadow).weight;
     };
     // From the mirror direction: Kd cos 45 + Ks (the highlight's peak)
     const Vec3 peak = unblocked(Vec3(-4.0, 0.0, 5.0));
@@ -117,7 +117,7 @@ TEST_CASE("n lights each shine 1/sqrt(n) (Haines' SPD)", "[shading][physics]") {
         const Scene s = unitSphere(m, n);
         const std::vector<RayTask> c = shadeHit(s, down, 4.0);
         REQUIRE(c.size() == std::size_t(n));  // one shadow ray per light, no reflection (Ks = 0)
-        for (const RayTask& t : c) REQUIRE(t.unblocked.x == Approx(0.8 / std::sqrt(double(n))).epsilon(1e-14));
+        for (const RayTask& t : c) REQUIRE(t.weight.x == Approx(0.8 / std::sqrt(double(n))).epsilon(1e-14));
     }
 }
 

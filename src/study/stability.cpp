@@ -16,14 +16,14 @@ namespace {
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool hasNaN(const Vec3& v) { return std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z); }
 
-/// Marks pixels that a NaN or an infinity reached: through a ray, a weight, the light a
-/// shadow ray carries, or a hit distance.
+/// Marks pixels that a NaN or an infinity reached: through a ray, a weight (for a shadow
+/// ray, the light it carries), or a hit distance.
 class NonFiniteProbe final : public TraceSink {
 public:
     explicit NonFiniteProbe(int pixels) : nan(pixels, 0), inf(pixels, 0) {}
     void onEvent(const TraceEvent& e) override {
         const RayTask& t = e.task;
-        const Vec3 values[] = {t.query.ray.o, t.query.ray.d, t.weight, t.unblocked};
+        const Vec3 values[] = {t.query.ray.o, t.query.ray.d, t.weight};
         for (const Vec3& v : values) {
             if (hasNaN(v)) nan[t.pixel] = 1;
             else if (!finite(v)) inf[t.pixel] = 1;

@@ -28,7 +28,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     // [shade-leaves]
     // A shadow ray that reaches its light brings the light it was carrying
     if (q.kind == RayKind::Shadow) {
-        if (hit.object < 0) image.add(task.pixel, task.unblocked);
+        if (hit.object < 0) image.add(task.pixel, task.weight);
         return;
     }
     // A ray that hits nothing sees the background
@@ -99,7 +99,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
             if (samples > 1) light_in /= double(samples);
             if (maxComponent(light_in) <= 0.0) continue;  // nothing to gain: no shadow ray
             // The shadow ray carries the light it would bring
-            spawn(RayKind::Shadow, k, j, l, dist, task.weight).unblocked = light_in;
+            spawn(RayKind::Shadow, k, j, l, dist, light_in);
         }
     }
     // [shade-local]
