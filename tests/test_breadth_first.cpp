@@ -99,6 +99,31 @@ TEST_CASE("bfs makes fewer complete searches than scanline with a cache", "[bfs]
     }
 }
 
+TEST_CASE("bfs defers misses only where a complete search is dear", "[bfs]") {
+    // Blocker+ in front of a grid or a hierarchy asks every ray fully: a deferral would
+    // cost a second lookup to save a cheap search. In front of the linear scan, and for
+    // the paper's blocker anywhere, rays whose cheap lookup fails wait for a later region.
+    auto scene = std::make_shared<const Scene>(readNffFile(std::string(RAYCACHE_SCENES_DIR) + "/balls2.nff"));
+    RenderOptions o;
+    o.width = o.height = 64;
+    o.order = OrderKind::BreadthFirst;
+    RenderSession reference(scene, o);
+    reference.run();
+    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
+        for (CacheKind cache : {CacheKind::Blocker, CacheKind::BlockerPlus}) {
+            o.accel = accel;
+            o.cache = cache;
+            RenderSession bfs(scene, o);
+            bfs.run();
+            const bool defers = !(cache == CacheKind::BlockerPlus && accel != AccelKind::Linear);
+            INFO(toString(accel) << " " << toString(cache) << ": " << bfs.counters().deferrals << " deferrals");
+            REQUIRE(bfs.strategy().defersMisses() == defers);
+            REQUIRE((bfs.counters().deferrals > 0) == defers);
+            REQUIRE(bfs.image().rgb8() == reference.image().rgb8());
+        }
+    }
+}
+
 TEST_CASE("progressive order traces all eye rays of a band before any deeper ray", "[progressive]") {
     auto scene = std::make_shared<const Scene>(makeBuiltin("cube:3"));
     RenderOptions o;

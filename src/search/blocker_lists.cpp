@@ -130,10 +130,13 @@ bool BlockerLists::tilesUnder(const Tiling& t, const Sphere& a, const Sphere& b,
 }
 
 int BlockerLists::tileSite(const Tiling& t, const Vec3& p) const {
-    // The tile holding p; a point just outside the box (rounding) goes to the nearest tile
+    // The tile holding p; a point just outside the box (rounding) goes to the nearest tile.
+    // Below 0 and above the count both clamp, so truncation serves for floor (a call of
+    // libm's floor per ray was 3% of a render of balls2 in front of a hierarchy)
     const Vec3 d = p - t.corner;
-    const int i = std::clamp(int(std::floor(glm::dot(d, t.e1) / t.du)), 0, t.nu - 1);
-    const int j = std::clamp(int(std::floor(glm::dot(d, t.e2) / t.dv)), 0, t.nv - 1);
+    auto index = [](double u, int count) { return std::clamp(u, 0.0, double(count - 1)); };
+    const int i = int(index(glm::dot(d, t.e1) / t.du, t.nu));
+    const int j = int(index(glm::dot(d, t.e2) / t.dv, t.nv));
     return firstTileSite() + t.firstTile + j * t.nu + i;
 }
 
