@@ -112,22 +112,23 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
     // more than the rest of this function): (local + 1/2) / width is an exact enough quotient
     const int y = int((local + 0.5) * invWidth_), x = local - y * width_;
     const int rows = nextRow_ - bandRow_;
-    const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
-    auto visit = [&](int nx, int ny) {
-        if (nx < 0 || ny < 0 || nx >= width_ || ny >= rows) return;
-        const int q = ny * width_ + nx;
-        if (state_[q] == Unvisited || state_[q] == Deferred) {
-            state_[q] = Queued;
-            queue_.push_back(q);
-            // Its ray is traced soon: start fetching it now
-            const char* task = reinterpret_cast<const char*>(&tasks[std::size_t(slot_[q])]);
-            for (std::size_t line = 0; line < sizeof(RayTask); line += 64) __builtin_prefetch(task + line);
-        }
+    // Plain pointers: a state is a byte, and a store through it could change any member,
+    // which the compiler would then load again after every store
+    State* const state = state_.data();
+    const int* const slot = slot_.data();
+    const RayTask* const tasks = paths_[generation_[pathIndex_]].data();
+    auto visit = [&](int q) {
+        if (state[q] != Unvisited && state[q] != Deferred) return;
+        state[q] = Queued;
+        queue_.push_back(q);
+        // Its ray is traced soon: start fetching it now
+        const char* task = reinterpret_cast<const char*>(tasks + slot[q]);
+        for (std::size_t line = 0; line < sizeof(RayTask); line += 64) __builtin_prefetch(task + line);
     };
-    visit(x - 1, y);
-    visit(x + 1, y);
-    visit(x, y - 1);
-    visit(x, y + 1);
+    if (x > 0) visit(local - 1);
+    if (x + 1 < width_) visit(local + 1);
+    if (y > 0) visit(local - width_);
+    if (y + 1 < rows) visit(local + width_);
     peak_ = std::max(peak_, queue_.size());
 }
 
