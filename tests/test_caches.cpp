@@ -290,6 +290,19 @@ TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]
     REQUIRE(again.blockerListsBuilt == 0);
     REQUIRE(again.hullTests == 0);
     REQUIRE(fresh.size() == 1);
+
+    // A path's memo of its last list answers only for that list's own pair
+    std::uint32_t memo = std::uint32_t(-1);
+    for (int round = 0; round < 2; ++round)
+        for (int target = 0; target < 4; ++target)
+            for (int repeat = 0; repeat < 2; ++repeat) {
+                const BlockerList& list = fresh.get(fresh.eyeSite(), target, memo, again);
+                REQUIRE(&list == &fresh.get(fresh.eyeSite(), target, again));
+                REQUIRE(list.origin == fresh.eyeSite());
+                REQUIRE(list.target == target);
+            }
+    REQUIRE(fresh.size() == 4);
+    REQUIRE(again.blockerListsBuilt == 3);
 }
 
 TEST_CASE("the cache tree flushes the entries beneath a miss", "[cache][tree]") {

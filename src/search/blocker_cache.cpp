@@ -97,7 +97,7 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Count
     if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
     // The potential blockers between origin and target (its tile, for a large polygon)
     const int target = lists_.pointSite(e.object, q.ray.at(t));
-    const BlockerList& list = lists_.get(lists_.originSite(q), target, n);
+    const BlockerList& list = lists_.get(lists_.originSite(q), target, e.list, n);
     // Blocker+: a list longer than a complete search through a hierarchy: search instead
     if (plus_ && list.bypass) return searchPast(q, &e, mode, n);
     // Then only the potential blockers between origin and target can come first
@@ -144,11 +144,11 @@ Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, 
     // [blocker-empty]
 }
 
-Lookup BlockerCache::shadow(const Query& q, const CacheEntry& e, MissReason why, LookupMode mode, Counters& n) {
+Lookup BlockerCache::shadow(const Query& q, CacheEntry& e, MissReason why, LookupMode mode, Counters& n) {
     // [blocker-shadow]
     // Every object that can stand between a surface and its light meets their hull
     Answer best;
-    const BlockerList& list = lists_.get(lists_.originSite(q), lists_.lightSite(q.light), n);
+    const BlockerList& list = lists_.get(lists_.originSite(q), lists_.lightSite(q.light), e.list, n);
     if (plus_ && list.bypass) return searchPast(q, nullptr, mode, n);
     testBlockers(q, list, best, n);
     if (why != MissReason::None) return {true, best, Decision::Miss, why};

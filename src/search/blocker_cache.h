@@ -46,7 +46,7 @@ protected:
 private:
     Lookup probe(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
-    Lookup shadow(const Query& q, const CacheEntry& e, MissReason unusable, LookupMode mode, Counters& n);
+    Lookup shadow(const Query& q, CacheEntry& e, MissReason unusable, LookupMode mode, Counters& n);
     void buildCone(CacheEntry& e, Counters& n) const;
     /// Tests the potential blockers of `list` against `q`, keeping the nearest in `best`.
     void testBlockers(const Query& q, const BlockerList& list, Answer& best, Counters& n) const;

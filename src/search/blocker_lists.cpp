@@ -174,9 +174,12 @@ const std::vector<int>* BlockerLists::find(int origin, int target) const {
     return list ? &list->ids : nullptr;
 }
 
-const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
+std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     const std::uint64_t id = key(origin, target);
-    if (const BlockerList* list = lookup(id)) return *list;
+    if (!slotKeys_.empty()) {
+        const std::size_t k = slot(id);
+        if (slotKeys_[k] != 0) return slotLists_[k];
+    }
     // A new pair: keep the table at most half full
     if (2 * (lists_.size() + 1) > slotKeys_.size()) {
         std::vector<std::uint64_t> keys = std::move(slotKeys_);
@@ -192,8 +195,11 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     }
     const std::size_t k = slot(id);
     slotKeys_[k] = id + 1;
-    slotLists_[k] = std::uint32_t(lists_.size());
+    const std::uint32_t number = std::uint32_t(lists_.size());
+    slotLists_[k] = number;
     BlockerList& list = lists_.emplace_back();
+    list.origin = origin;
+    list.target = target;
     // [build-blocker-list]
     // Every object whose bounding sphere meets the hull of origin and target may block
     const Sphere a = siteSphere(origin);
@@ -223,7 +229,7 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
         // Not worth testing: its pair is searched instead
         list.bypass = true;
         ++n.blockerListsBuilt;
-        return list;
+        return number;
         // [step-aside-list]
     }
     for (auto& [reach, id] : found_) {
@@ -240,7 +246,7 @@ const BlockerList& BlockerLists::get(int origin, int target, Counters& n) {
     ++n.blockerListsBuilt;
     n.blockerListEntries += list.ids.size();
     n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());
-    return list;
+    return number;
 }
 
 void BlockerLists::truncate(std::size_t n) {

@@ -21,6 +21,7 @@ namespace rc {
 /// leaving the origin site must travel to reach it: once a hit nearer than that is known,
 /// the rest of the list cannot come first (a pruning the paper does not describe).
 struct BlockerList {
+    int origin = -1, target = -1;  ///< its pair of sites
     std::vector<int> ids;
     std::vector<double> reach;  ///< |c_j - c_origin| - r_j - r_origin, ascending
     /// Longer than a complete search through a grid or hierarchy: its pair is searched
@@ -77,7 +78,17 @@ public:
 
     /// Every object whose bounding sphere meets the hull of the two sites, the target
     /// excepted; built on first use and counted in `n`.
-    const BlockerList& get(int origin, int target, Counters& n);
+    const BlockerList& get(int origin, int target, Counters& n) { return lists_[index(origin, target, n)]; }
+    /// The same, trying first the list numbered `memo` (a path's rays mostly ask for the
+    /// pair its last ray asked for: no hashing then), and leaving the list's number there.
+    const BlockerList& get(int origin, int target, std::uint32_t& memo, Counters& n) {
+        if (memo < lists_.size()) {
+            const BlockerList& last = lists_[memo];
+            if (last.origin == origin && last.target == target) return last;
+        }
+        memo = index(origin, target, n);
+        return lists_[memo];
+    }
     /// The list if it was built, else nullptr.
     const std::vector<int>* find(int origin, int target) const;
     std::size_t size() const { return lists_.size(); }
@@ -118,6 +129,8 @@ private:
     std::size_t slot(std::uint64_t key) const;
     /// Where a built list is kept, or nullptr. (A lookup per ray: an open-addressed table.)
     const BlockerList* lookup(std::uint64_t key) const;
+    /// The number of the pair's list, built first if need be.
+    std::uint32_t index(int origin, int target, Counters& n);
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
 };
 
