@@ -27,14 +27,14 @@ bool BreadthFirstOrder::beginPath() {
             nextRow_ = std::min(height_, bandRow_ + band_);
             // Each pixel sample's eye rays are a path of their own
             for (int k = 0; k < samples_; ++k) {
-                RayTask first = makeEye_(bandRow_ * width_, k);
+                RayTask first;
+                makeEye_(bandRow_ * width_, k, first);
                 const int node = first.node;
                 if (node >= int(paths_.size())) paths_.resize(std::size_t(node) + 1);
                 std::vector<RayTask>& eyes = paths_[node];
                 eyes.clear();
                 eyes.reserve(std::size_t(nextRow_ - bandRow_) * width_);
-                eyes.push_back(std::move(first));
-                for (int p = bandRow_ * width_ + 1; p < nextRow_ * width_; ++p) eyes.push_back(makeEye_(p, k));
+                for (int p = bandRow_ * width_; p < nextRow_ * width_; ++p) makeEye_(p, k, eyes.emplace_back());
                 generation_.push_back(node);
             }
         }
@@ -48,9 +48,11 @@ bool BreadthFirstOrder::beginPath() {
         slot_.assign(pixels, -1);
     }
     const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
+    // An eye path holds the band's pixels in order: its tasks need not be read
+    const bool eyes = tasks.size() == pixels && tasks.front().query.kind == RayKind::Primary;
     byPixel_.clear();
     for (int i = 0; i < int(tasks.size()); ++i) {
-        const int local = tasks[i].pixel - bandRow_ * width_;
+        const int local = eyes ? i : tasks[i].pixel - bandRow_ * width_;
         slot_[local] = i;
         state_[local] = Unvisited;
         byPixel_.push_back(local);

@@ -14,7 +14,7 @@ std::optional<Pick> ProgressiveOrder::next() {
         // A new band: its eye rays first
         const int end = std::min(height_, nextRow_ + band_);
         for (int p = nextRow_ * width_; p < end * width_; ++p)
-            for (int k = 0; k < samples_; ++k) queue_.push_back(makeEye_(p, k));
+            for (int k = 0; k < samples_; ++k) makeEye_(p, k, queue_.emplace_back());
         nextRow_ = end;
         peak_ = std::max(peak_, queue_.size());
     }

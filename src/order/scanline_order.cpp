@@ -7,7 +7,7 @@ namespace rc {
 std::optional<Pick> ScanlineOrder::next() {
     if (stack_.empty()) {
         if (nextPixel_ >= pixels_) return std::nullopt;
-        stack_.push_back(makeEye_(nextPixel_, nextSample_));
+        makeEye_(nextPixel_, nextSample_, stack_.emplace_back());
         if (++nextSample_ == samples_) {
             nextSample_ = 0;
             ++nextPixel_;

@@ -33,9 +33,9 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
       paths_(options_.sampleEntries),
       image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {
     order_ = makeOrder(options_.order, options_.width, options_.rowBegin, options_.rowEnd, options_.band,
-                       options_.shading.sampling.spp, strategy_->defersMisses(), [this](int pixel, int sample) {
+                       options_.shading.sampling.spp, strategy_->defersMisses(), [this](int pixel, int sample, RayTask& t) {
                            ++primaries_;
-                           return eyeTask(pixel, sample);
+                           eyeTask(pixel, sample, t);
                        });
 }
 
@@ -52,12 +52,11 @@ Ray RenderSession::primaryRay(int pixel, int sample) const {
     // [eye-sample]
 }
 
-RayTask RenderSession::eyeTask(int pixel, int sample) {
+void RenderSession::eyeTask(int pixel, int sample, RayTask& t) {
     const int spp = options_.shading.sampling.spp;
-    RayTask t = primaryTask(primaryRay(pixel, sample), pixel, sample,
-                            eyeKey(options_.shading.sampling.seed, pixel, sample), spp > 1 ? 1.0 / spp : 1.0);
+    primaryTask(t, primaryRay(pixel, sample), pixel, sample, eyeKey(options_.shading.sampling.seed, pixel, sample),
+                spp > 1 ? 1.0 / spp : 1.0);
     t.node = paths_.root(sample);
-    return t;
 }
 
 double RenderSession::progress() const {

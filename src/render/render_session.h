@@ -80,8 +80,8 @@ public:
     std::int64_t steps() const { return steps_; }
     /// The eye ray of a pixel (of pixel sample `sample`, jittered when there are several).
     Ray primaryRay(int pixel, int sample = 0) const;
-    /// The eye ray task of a pixel sample, with its path in the cache tree.
-    RayTask eyeTask(int pixel, int sample);
+    /// The eye ray task of a pixel sample, with its path in the cache tree, made in `t`.
+    void eyeTask(int pixel, int sample, RayTask& t);
     /// Eye rays not yet started, as a fraction of all pixels (for progress).
     double progress() const;
 

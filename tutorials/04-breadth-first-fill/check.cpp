@@ -26,11 +26,8 @@ namespace {
 // one-entry cache that holds the key of the last complete search. Returns the number of
 // regions it seeds.
 long libraryRegions(int width, int height, int band, const std::vector<int>& key) {
-    rc::BreadthFirstOrder order(width, 0, height, band, 1, true, [](int pixel, int) {
-        rc::RayTask t;
-        t.pixel = pixel;
-        return t;
-    });
+    rc::BreadthFirstOrder order(width, 0, height, band, 1, true,
+                               [](int pixel, int, rc::RayTask& t) { t.pixel = pixel; });
     int cached = INT_MIN;
     std::vector<rc::RayTask> none;
     while (std::optional<rc::Pick> pick = order.next()) {
