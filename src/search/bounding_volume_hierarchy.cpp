@@ -11,7 +11,6 @@ namespace rc {
 namespace {
 constexpr int kBins = 12;
 constexpr int kMaxLeaf = 8;
-constexpr int kMaxDepth = 60;  ///< the traversal stack holds this many nodes
 
 double area(const double* lo, const double* hi) {
     const double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
@@ -201,35 +200,10 @@ Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
     return best;
 }
 
-void BoundingVolumeHierarchy::cull(SphereCull& c) const {
-    if (order_.empty()) return;
-    // [bvh-cull]
-    // Open the bounding spheres within the limit, nearest first; the limit may shrink
-    Ref stack[kMaxDepth + 2];
-    double distances[kMaxDepth + 2];
-    int top = 0;
-    stack[top] = root_;
-    distances[top++] = c.distance(bound(root_));
-    while (top > 0) {
-        --top;
-        if (distances[top] > c.limit) continue;
-        if (stack[top] < 0) {
-            const Leaf& leaf = leaves_[~stack[top]];
-            for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
-                const double d = c.distance(scene_.objects[order_[i]].bound);
-                if (d <= c.limit) c.found(order_[i], d);
-            }
-            continue;
-        }
-        const Node& node = nodes_[stack[top]];
-        const double dl = c.distance(bound(node.child[0])), dr = c.distance(bound(node.child[1]));
-        const int nearer = dl <= dr ? 0 : 1;
-        stack[top] = node.child[1 - nearer];
-        distances[top++] = nearer == 0 ? dr : dl;
-        stack[top] = node.child[nearer];
-        distances[top++] = nearer == 0 ? dl : dr;
-    }
-    // [bvh-cull]
+double BoundingVolumeHierarchy::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
+    SegmentClearance c(a, b, skip, skipToo, cap);
+    cullWith(c);
+    return c.limit;
 }
 
 int BoundingVolumeHierarchy::depth() const { return depth_; }

@@ -18,30 +18,15 @@ void CompleteSearch::cull(SphereCull& c) const {
 }
 
 double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
-    // How near the segment a sphere inside s can come (the segment worked out once)
-    struct Clearance final : SphereCull {
-        Clearance(const Vec3& from, const Vec3& to, int skip, int skipToo, double cap)
-            : ab(to - from), skip(skip), skipToo(skipToo) {
-            a = from;
-            b = to;
-            const double len2 = glm::dot(ab, ab);
-            invLen2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
-            radius = limit = cap;
-        }
-        double distance(const Sphere& s) override {
-            const Vec3 p = s.c - a;
-            const double t = std::clamp(glm::dot(p, ab) * invLen2, 0.0, 1.0);
-            return glm::length(p - t * ab) - s.r;
-        }
-        void found(int id, double d) override {
-            if (id != skip && id != skipToo) limit = std::min(limit, d);
-        }
-        Vec3 ab;
-        double invLen2;
-        int skip, skipToo;
-    };
-    Clearance c(a, b, skip, skipToo, cap);
+    SegmentClearance c(a, b, skip, skipToo, cap);
     cull(c);
+    return c.limit;
+}
+
+double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
+    if (!regions_) return CompleteSearch::clearance(a, b, skip, skipToo, cap);
+    SegmentClearance c(a, b, skip, skipToo, cap);
+    regions_->cullWith(c);
     return c.limit;
 }
 

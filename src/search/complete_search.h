@@ -1,9 +1,12 @@
 #pragma once
 /// \file
 /// \brief The complete search: what every cache falls back on when it misses.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "search/query.h"
 #include "search/sphere_batch.h"
@@ -29,6 +32,32 @@ public:
     /// lies within `radius` of the segment a-b (infinite: anywhere).
     Vec3 a{0.0}, b{0.0};
     double radius = kNoHit;
+};
+
+/// How near segment a-b comes to a sphere (less its radius: a lower bound for any sphere
+/// inside), every object but two kept under the limit: a cylinder of safety's radius. It
+/// is `final`, so a traversal that knows its type calls it directly, without a virtual
+/// call per sphere (CompleteSearch::clearance).
+struct SegmentClearance final : SphereCull {
+    SegmentClearance(const Vec3& from, const Vec3& to, int skip, int skipToo, double cap)
+        : ab(to - from), skip(skip), skipToo(skipToo) {
+        a = from;
+        b = to;
+        const double len2 = glm::dot(ab, ab);
+        invLen2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+        radius = limit = cap;
+    }
+    double distance(const Sphere& s) override {
+        const Vec3 p = s.c - a;
+        const double t = std::clamp(glm::dot(p, ab) * invLen2, 0.0, 1.0);
+        return glm::length(p - t * ab) - s.r;
+    }
+    void found(int id, double d) override {
+        if (id != skip && id != skipToo) limit = std::min(limit, d);
+    }
+    Vec3 ab;
+    double invLen2;
+    int skip, skipToo;
 };
 
 /// Finds the nearest hit over the whole scene. Implementations (a linear scan, a grid, a
@@ -76,6 +105,7 @@ public:
     ~LinearSearch() override;
     Answer nearest(const Query& q, Counters& n) const override;
     void cull(SphereCull& c) const override;
+    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override;
     std::string name() const override { return "linear"; }
     bool cheap() const override { return false; }
 
