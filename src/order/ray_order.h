@@ -24,7 +24,7 @@ std::optional<OrderKind> parseOrderKind(std::string_view s);
 
 /// The next ray to trace and how far its lookup may go. The task stays where the order
 /// keeps it, unmoved until the order hears what became of it (committed() or
-/// deferred()): handing out a copy cost a store of 144 bytes per ray, and its reload.
+/// deferred()): handing out a copy cost a store of a whole task per ray, and its reload.
 struct Pick {
     const RayTask* task = nullptr;
     LookupMode mode = LookupMode::Full;

@@ -33,7 +33,8 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
       paths_(options_.sampleEntries),
       image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {
     order_ = makeOrder(options_.order, options_.width, options_.rowBegin, options_.rowEnd, options_.band,
-                       options_.shading.sampling.spp, strategy_->defersMisses(), [this](int pixel, int sample, RayTask& t) {
+                       options_.shading.sampling.spp, strategy_->defersMisses(),
+                       [this](int pixel, int sample, RayTask& t) {
                            ++primaries_;
                            eyeTask(pixel, sample, t);
                        });
