@@ -41,8 +41,8 @@ struct FrontierView {
 /// Hands out rays one at a time and learns what became of them.
 class RayOrder {
 public:
-    /// `makeEye(pixel, sample, t)` makes the eye ray of a pixel's sample in `t`, where the
-    /// order keeps it (see primaryTask()).
+    /// `makeEye(pixel, sample, t)` makes the eye ray of a pixel's sample in `t`, a task just
+    /// constructed where the order keeps it (see primaryTask()).
     using EyeMaker = std::function<void(int pixel, int sample, RayTask& t)>;
     virtual ~RayOrder() = default;
     virtual OrderKind kind() const = 0;

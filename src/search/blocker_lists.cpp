@@ -134,9 +134,9 @@ int BlockerLists::tileSite(const Tiling& t, const Vec3& p) const {
     // Below 0 and above the count both clamp, so truncation serves for floor (a call of
     // libm's floor per ray was 3% of a render of balls2 in front of a hierarchy)
     const Vec3 d = p - t.corner;
-    auto index = [](double u, int count) { return std::clamp(u, 0.0, double(count - 1)); };
-    const int i = int(index(glm::dot(d, t.e1) / t.du, t.nu));
-    const int j = int(index(glm::dot(d, t.e2) / t.dv, t.nv));
+    auto cell = [](double u, int count) { return int(std::clamp(u, 0.0, double(count - 1))); };
+    const int i = cell(glm::dot(d, t.e1) / t.du, t.nu);
+    const int j = cell(glm::dot(d, t.e2) / t.dv, t.nv);
     return firstTileSite() + t.firstTile + j * t.nu + i;
 }
 
@@ -163,23 +163,20 @@ std::size_t BlockerLists::slot(std::uint64_t key) const {
     return k;
 }
 
-const BlockerList* BlockerLists::lookup(std::uint64_t key) const {
-    if (slotKeys_.empty()) return nullptr;
+std::uint32_t BlockerLists::lookup(std::uint64_t key) const {
+    if (slotKeys_.empty()) return kNoList;
     const std::size_t k = slot(key);
-    return slotKeys_[k] == 0 ? nullptr : &lists_[slotLists_[k]];
+    return slotKeys_[k] == 0 ? kNoList : slotLists_[k];
 }
 
 const std::vector<int>* BlockerLists::find(int origin, int target) const {
-    const BlockerList* list = lookup(key(origin, target));
-    return list ? &list->ids : nullptr;
+    const std::uint32_t number = lookup(key(origin, target));
+    return number == kNoList ? nullptr : &lists_[number].ids;
 }
 
 std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     const std::uint64_t id = key(origin, target);
-    if (!slotKeys_.empty()) {
-        const std::size_t k = slot(id);
-        if (slotKeys_[k] != 0) return slotLists_[k];
-    }
+    if (const std::uint32_t number = lookup(id); number != kNoList) return number;
     // A new pair: keep the table at most half full
     if (2 * (lists_.size() + 1) > slotKeys_.size()) {
         std::vector<std::uint64_t> keys = std::move(slotKeys_);

@@ -127,8 +127,9 @@ private:
     std::vector<std::uint64_t> slotKeys_;
     std::vector<std::uint32_t> slotLists_;
     std::size_t slot(std::uint64_t key) const;
-    /// Where a built list is kept, or nullptr. (A lookup per ray: an open-addressed table.)
-    const BlockerList* lookup(std::uint64_t key) const;
+    static constexpr std::uint32_t kNoList = std::uint32_t(-1);
+    /// The number of a built list, or kNoList. (A lookup per ray: an open-addressed table.)
+    std::uint32_t lookup(std::uint64_t key) const;
     /// The number of the pair's list, built first if need be.
     std::uint32_t index(int origin, int target, Counters& n);
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built

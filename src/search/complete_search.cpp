@@ -24,10 +24,8 @@ double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int ski
 }
 
 double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
-    if (!regions_) return CompleteSearch::clearance(a, b, skip, skipToo, cap);
-    SegmentClearance c(a, b, skip, skipToo, cap);
-    regions_->cullWith(c);
-    return c.limit;
+    if (regions_) return regions_->clearance(a, b, skip, skipToo, cap);
+    return CompleteSearch::clearance(a, b, skip, skipToo, cap);
 }
 
 void LinearSearch::cull(SphereCull& c) const {

@@ -12,16 +12,10 @@ double maxComponent(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 }  // namespace
 
 void primaryTask(RayTask& t, const Ray& ray, int pixel, int sample, std::uint64_t key, double weight) {
-    // Every field, one by one (t may hold an earlier task)
+    // What differs from a new task, one field at a time
     t.query.ray.o = ray.o;
     t.query.ray.d = ray.d;
-    t.query.tmax = kNoHit;
-    t.query.origin = RayOrigin{};
-    t.query.kind = RayKind::Primary;
-    t.query.light = -1;
     t.pixel = pixel;
-    t.node = 0;
-    t.depth = 1;
     t.sample = sample;
     t.key = key;
     t.weight = Vec3(weight);

@@ -31,8 +31,9 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
 /// The eye ray task of one pixel (pixel sample `sample`, random-number key `key`, and
 /// weight `weight`: 1 / spp).
 RayTask primaryTask(const Ray& ray, int pixel, int sample = 0, std::uint64_t key = 0, double weight = 1.0);
-/// The same, made in `t`: where it is kept (an order makes eye rays by the band; a task
-/// returned by value and copied there is read back before its own stores have landed).
+/// The same, made in `t`, a task just constructed, where it is kept (an order makes eye
+/// rays by the band; a task returned by value and copied there is read back before its
+/// own stores have landed).
 void primaryTask(RayTask& t, const Ray& ray, int pixel, int sample, std::uint64_t key, double weight);
 
 }  // namespace rc
