@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install what RayCache needs from Debian bookworm, idempotently: a no-op when all is there.
-# Usage: scripts/setup.sh [--with-browser] [--with-valgrind]   (run as root, or with sudo available)
-# --with-browser: chromium, to look at the docs headless; --with-valgrind: for tests/ui/valgrind_gui.sh
+# Usage: scripts/setup.sh [--with-browser] [--with-valgrind] [--with-profilers]   (as root, or with sudo)
+# --with-browser: chromium, to look at the docs headless; --with-valgrind: for tests/ui/valgrind_gui.sh;
+# --with-profilers: perf and valgrind, to measure where a render's time goes (see docs/pages/table1.md)
 set -euo pipefail
 
 packages=(
@@ -16,6 +17,7 @@ for option in "$@"; do
   case "$option" in
     --with-browser) packages+=(chromium) ;;
     --with-valgrind) packages+=(valgrind) ;;
+    --with-profilers) packages+=(linux-perf valgrind) ;;
     *) echo "setup: unknown option $option" >&2; exit 2 ;;
   esac
 done
