@@ -102,6 +102,19 @@ TEST_CASE("the linear search culls through its hierarchy exactly as by a scan", 
             const double radius = scan.clearance(from.c, to.c, skip, skipToo, kNoHit);
             REQUIRE(tree.clearance(from.c, to.c, skip, skipToo, kNoHit) == radius);
             REQUIRE(tree.clearance(from.c, to.c, skip, skipToo, 0.25) == std::min(radius, 0.25));
+            // Told to stop below a distance, it is exact at or above it, else a bound
+            // from above that is still below it (an object nearer than the stop)
+            for (double stop : {radius - 0.5, radius, radius + 1e-9, radius + 0.5}) {
+                for (const CompleteSearch* search : {static_cast<const CompleteSearch*>(&tree), static_cast<const CompleteSearch*>(&scan)}) {
+                    const double stopped = search->clearance(from.c, to.c, skip, skipToo, kNoHit, stop);
+                    if (radius >= stop) {
+                        REQUIRE(stopped == radius);
+                    } else {
+                        REQUIRE(stopped >= radius);
+                        REQUIRE(stopped < stop);
+                    }
+                }
+            }
             cut += radius < 0.0;
         }
         // Segments both clear of every object and inside some

@@ -10,6 +10,7 @@
 #include "random_scenes.h"
 #include "render/render_session.h"
 #include "geometry/cone.h"
+#include "scene/builtin_scenes.h"
 #include "search/accelerator.h"
 #include "search/blocker_cache.h"
 #include "search/cylinder_cache.h"
@@ -116,8 +117,9 @@ public:
     }
     std::string name() const override { return inner_.name(); }
     void cull(SphereCull& c) const override { inner_.cull(c); }
-    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override {
-        return inner_.clearance(a, b, skip, skipToo, cap);
+    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                     double stopBelow = -kNoHit) const override {
+        return inner_.clearance(a, b, skip, skipToo, cap, stopBelow);
     }
     double nearRadius() const override { return inner_.nearRadius(); }
     bool cheap() const override { return inner_.cheap(); }
@@ -303,6 +305,68 @@ TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]
             }
     REQUIRE(fresh.size() == 4);
     REQUIRE(again.blockerListsBuilt == 3);
+}
+
+TEST_CASE("a cylinder of safety is measured only once a ray may fit in it", "[cache][cylinder]") {
+    const Scene scene = testing::randomScene(Layout::Tangent, 3);
+    const LinearSearch linear(scene);
+    const double slack = 1e-9 * scene.extent();
+    auto strategy = makeStrategy(CacheKind::Cylinder, scene, linear);
+    // A ray leaving a sphere that hits nothing, with room around it
+    int checked = 0;
+    for (const Query& q : queryStream(scene, 5)) {
+        if (q.kind != RayKind::Reflection || q.origin.inside || checked >= 20) continue;
+        CacheEntry e;
+        Counters n;
+        const Lookup first = strategy->lookup(q, e, LookupMode::Full, n);
+        if (first.answer.object >= 0) continue;
+        const SafetyCylinder kept = e.cylinder;
+        const double radius = linear.clearance(kept.a, kept.b, -1, q.origin.object, kNoHit) - slack;
+        if (!(radius > 0.0)) continue;
+        REQUIRE(e.pending);
+        // A ray from the same point turned far away strays farther than the nearest object
+        // lies: ruled out, nothing measured in full, the cylinder still pending
+        Query turned = q;
+        turned.ray.d = glm::normalize(glm::reflect(q.ray.d, glm::normalize(q.ray.o - scene.objects[q.origin.object].bound.c)) + 0.3 * q.ray.d);
+        const double strays = std::max(kept.distance(turned.ray.o), kept.distance(turned.ray.at(1.0)));
+        if (!(strays > radius)) continue;
+        const Lookup away = strategy->lookup(turned, e, LookupMode::CheapOnly, n);
+        REQUIRE_FALSE(away.known);
+        REQUIRE(away.reason == MissReason::LeftCylinder);
+        REQUIRE(n.cylindersRuledOut == 1);
+        REQUIRE(n.cylindersBuilt == 0);
+        REQUIRE(e.pending);
+        REQUIRE(e.cylinderBelow >= radius);
+        // The ray itself fits: now the cylinder is built, with the radius of a full measure
+        const Lookup again = strategy->lookup(q, e, LookupMode::CheapOnly, n);
+        REQUIRE(again.known);
+        REQUIRE(again.decision == Decision::Hit);
+        REQUIRE(n.cylindersBuilt == 1);
+        REQUIRE_FALSE(e.pending);
+        REQUIRE(e.cylinder.radius == radius);
+        REQUIRE(n.completeSearches == 1);
+        ++checked;
+    }
+    REQUIRE(checked == 20);
+
+    // Whole renders: the same image as no cache, and most cylinders never measured
+    auto cube = std::make_shared<const Scene>(loadScene("cube:4"));
+    RenderOptions base;
+    base.width = base.height = 48;
+    RenderSession reference(cube, base);
+    reference.run();
+    for (CacheKind cache : {CacheKind::Cylinder, CacheKind::Blocker})
+        for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) {
+            RenderOptions o = base;
+            o.cache = cache;
+            o.order = order;
+            RenderSession s(cube, o);
+            s.run();
+            INFO(toString(cache) << " " << toString(order));
+            REQUIRE(s.image().rgb8() == reference.image().rgb8());
+            REQUIRE(s.counters().cylindersBuilt > 0);
+            REQUIRE(s.counters().cylindersRuledOut > s.counters().cylindersBuilt);
+        }
 }
 
 TEST_CASE("the cache tree flushes the entries beneath a miss", "[cache][tree]") {

@@ -23,7 +23,8 @@ nlohmann::json countersJson(const Counters& n) {
                   {"miss_reasons", reasons},
                   {"deferrals", n.deferrals},
                   {"verify_disagreements", n.verifyDisagreements},
-                  {"cylinders_built", n.cylindersBuilt}};
+                  {"cylinders_built", n.cylindersBuilt},
+                  {"cylinders_ruled_out", n.cylindersRuledOut}};
     j["blocker_lists"] = {
         {"built", n.blockerListsBuilt},
         {"mean_length", n.blockerListsBuilt ? double(n.blockerListEntries) / double(n.blockerListsBuilt) : 0.0},

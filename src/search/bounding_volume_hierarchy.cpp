@@ -200,10 +200,11 @@ Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
     return best;
 }
 
-double BoundingVolumeHierarchy::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
-    SegmentClearance c(a, b, skip, skipToo, cap);
+double BoundingVolumeHierarchy::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                                          double stopBelow) const {
+    SegmentClearance c(a, b, skip, skipToo, cap, stopBelow);
     cullWith(c);
-    return c.limit;
+    return c.least;
 }
 
 int BoundingVolumeHierarchy::depth() const { return depth_; }

@@ -26,7 +26,8 @@ public:
     /// virtual call per sphere (a cylinder of safety measures a hundred-odd).
     template <class Cull>
     void cullWith(Cull& c) const;
-    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override;
+    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                     double stopBelow = -kNoHit) const override;
     /// Inner nodes and leaves.
     int nodeCount() const { return int(nodes_.size() + leaves_.size()); }
     /// The deepest leaf (the root is depth 1).

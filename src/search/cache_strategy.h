@@ -91,8 +91,12 @@ protected:
     void keepSegment(const Query& q, const Answer& a, CacheEntry& e) const;
     /// Builds the cylinder of safety around the kept segment (e.cylinder.a to b).
     void buildCylinder(CacheEntry& e, Counters& n) const;
-    /// Tests the cached object and the cylinder of safety.
-    Lookup probeCylinder(const Query& q, const CacheEntry& e, Counters& n) const;
+    /// Builds a pending cylinder for a new segment p-q that strays `need` from the kept
+    /// one, unless an object nearer than that shows it too narrow (e.cylinderBelow).
+    void buildCylinderFor(CacheEntry& e, double need, Counters& n) const;
+    /// Tests the cached object and the cylinder of safety, built (if pending) only when
+    /// the new segment could fit in it.
+    Lookup probeCylinder(const Query& q, CacheEntry& e, Counters& n) const;
 
     const Scene& scene_;
     const CompleteSearch& search_;

@@ -30,6 +30,8 @@ struct CacheEntry {
     double coneCos = 2.0;      ///< cos(coneAngle), for the test without trigonometry
     double coneSin = 0.0;      ///< sin(coneAngle)
     bool pending = false;      ///< cylinder or cone not built yet: built when the entry is next used
+    /// While the cylinder is pending: its radius, once measured, is known to be below this
+    double cylinderBelow = kNoHit;
     /// Blocker caches: the number of the list its last ray tested (BlockerLists::get)
     std::uint32_t list = std::uint32_t(-1);
 };

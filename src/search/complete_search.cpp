@@ -17,15 +17,17 @@ void CompleteSearch::cull(SphereCull& c) const {
     }
 }
 
-double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
-    SegmentClearance c(a, b, skip, skipToo, cap);
+double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                                 double stopBelow) const {
+    SegmentClearance c(a, b, skip, skipToo, cap, stopBelow);
     cull(c);
-    return c.limit;
+    return c.least;
 }
 
-double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const {
-    if (regions_) return regions_->clearance(a, b, skip, skipToo, cap);
-    return CompleteSearch::clearance(a, b, skip, skipToo, cap);
+double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                               double stopBelow) const {
+    if (regions_) return regions_->clearance(a, b, skip, skipToo, cap, stopBelow);
+    return CompleteSearch::clearance(a, b, skip, skipToo, cap, stopBelow);
 }
 
 void LinearSearch::cull(SphereCull& c) const {

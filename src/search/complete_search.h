@@ -39,8 +39,9 @@ public:
 /// is `final`, so a traversal that knows its type calls it directly, without a virtual
 /// call per sphere (CompleteSearch::clearance).
 struct SegmentClearance final : SphereCull {
-    SegmentClearance(const Vec3& from, const Vec3& to, int skip, int skipToo, double cap)
-        : ab(to - from), skip(skip), skipToo(skipToo) {
+    /// `stopBelow`: once an object lies nearer than this, stop; `least` is then its distance
+    SegmentClearance(const Vec3& from, const Vec3& to, int skip, int skipToo, double cap, double stopBelow)
+        : ab(to - from), skip(skip), skipToo(skipToo), stopBelow(stopBelow), least(cap) {
         a = from;
         b = to;
         const double len2 = glm::dot(ab, ab);
@@ -53,11 +54,16 @@ struct SegmentClearance final : SphereCull {
         return glm::length(p - t * ab) - s.r;
     }
     void found(int id, double d) override {
-        if (id != skip && id != skipToo) limit = std::min(limit, d);
+        if (id == skip || id == skipToo || !(d < least)) return;
+        least = d;
+        // Below the stop, the search is over: nothing more can meet the limit
+        limit = least < stopBelow ? -kNoHit : least;
     }
     Vec3 ab;
     double invLen2;
     int skip, skipToo;
+    double stopBelow;
+    double least;  ///< the clearance so far (at most the cap)
 };
 
 /// Finds the nearest hit over the whole scene. Implementations (a linear scan, a grid, a
@@ -72,8 +78,11 @@ public:
     /// every object.
     virtual void cull(SphereCull& c) const;
     /// The least distance from segment a-b to the bounding sphere of any object but `skip`
-    /// and `skipToo`, at most `cap`: the radius of a cylinder of safety. By default, a cull.
-    virtual double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const;
+    /// and `skipToo`, at most `cap`: the radius of a cylinder of safety. Once an object
+    /// nearer than `stopBelow` is found, that object's distance, an upper bound (so the
+    /// result is exact whenever it is at least `stopBelow`). By default, a cull.
+    virtual double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                             double stopBelow = -kNoHit) const;
     /// Cylinders of safety are capped at this radius, so that the objects near the segment
     /// (the cull's hint) are enough to build them (infinite: no cap). Where it is finite,
     /// cull() cannot find the objects near a direction cheaply, so the caches build no
@@ -105,7 +114,8 @@ public:
     ~LinearSearch() override;
     Answer nearest(const Query& q, Counters& n) const override;
     void cull(SphereCull& c) const override;
-    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap) const override;
+    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
+                     double stopBelow = -kNoHit) const override;
     std::string name() const override { return "linear"; }
     bool cheap() const override { return false; }
 

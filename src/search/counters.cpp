@@ -54,6 +54,7 @@ Counters& Counters::operator+=(const Counters& o) {
     blockerListMax = std::max(blockerListMax, o.blockerListMax);
     hullTests += o.hullTests;
     cylindersBuilt += o.cylindersBuilt;
+    cylindersRuledOut += o.cylindersRuledOut;
     return *this;
 }
 

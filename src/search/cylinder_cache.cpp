@@ -6,11 +6,7 @@ Lookup CylinderCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Cou
     // [cylinder-lookup]
     MissReason why = unusable(q, e);
     if (why == MissReason::None) {
-        // The cylinder is built the first time the entry is used again
-        if (e.pending) {
-            buildCylinder(e, n);
-            e.pending = false;
-        }
+        // The cylinder is built the first time a ray may fit in it
         const Lookup probe = probeCylinder(q, e, n);
         if (probe.known) return probe;
         why = probe.reason;
