@@ -74,8 +74,10 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
             return std::isnan(std::strtod(s.c_str(), nullptr)) ? "NaN is not a number from 0 to 1" : "";
         }, "", "NotNaN"))
         ->capture_default_str();
-    c->add_option("--band", f.band, "scanlines per band in bfs and progressive orders (0: whole image)")
-        ->check(CLI::Range(0, 16384))->capture_default_str();
+    c->add_option("--band", f.band,
+                  "scanlines per band in bfs and progressive orders (0: whole image; default: 16 in front of "
+                  "the linear scan, 1 in front of a grid, BVH or Embree)")
+        ->check(CLI::Range(0, 16384));
     c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter and of distributed ray tracing's samples")
         ->capture_default_str();
 }
@@ -126,7 +128,7 @@ RenderOptions RenderFlags::options() const {
     o.accel = *parseAccelKind(accel);
     o.shading.maxDepth = depth;
     o.shading.cutoff = cutoff;
-    o.band = band;
+    o.band = band == kAutoBand ? bandFor(o.accel) : band;  // so the statistics name it
     o.verify = verify;
     o.shading.sampling = sampling;
     o.shading.sampling.seed = seed;

@@ -21,7 +21,7 @@ using Commands = std::vector<Command>;
 
 /// Options shared by every subcommand that renders.
 struct RenderFlags {
-    int width = 0, height = 0, depth = 5, band = 16;
+    int width = 0, height = 0, depth = 5, band = kAutoBand;
     double cutoff = 0.0;
     std::string cache = "none", order = "scanline", accel = "linear";
     std::uint64_t seed = 1986;

@@ -12,12 +12,21 @@ RenderOptions resolved(const Scene& scene, RenderOptions o) {
     if (o.width <= 0 || o.height <= 0) throw std::invalid_argument("image size must be positive");
     if (o.shading.maxDepth < 1) throw std::invalid_argument("depth must be at least 1");
     if (o.rowEnd <= 0) o.rowEnd = o.height;
+    if (o.band == kAutoBand) o.band = bandFor(o.accel);
+    if (o.band < 0) throw std::invalid_argument("a band must be 0 (the whole image) or more scanlines");
     if (o.rowBegin < 0 || o.rowBegin >= o.rowEnd || o.rowEnd > o.height)
         throw std::invalid_argument("rows must lie within the image and not be empty");
     if (const auto e = samplingError(o.shading.sampling, o.shading.maxDepth)) throw std::invalid_argument(*e);
     return o;
 }
 }  // namespace
+
+int bandFor(AccelKind accel) {
+    // [band-for]
+    // Large regions where a complete search is dear; little memory where it is cheap
+    return accel == AccelKind::Linear ? 16 : 1;
+    // [band-for]
+}
 
 RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions options)
     : RenderSession(std::move(scene), options, nullptr) {}
