@@ -13,6 +13,7 @@
 #include "scene/builtin_scenes.h"
 #include "search/accelerator.h"
 #include "search/blocker_cache.h"
+#include "search/bounding_volume_hierarchy.h"
 #include "search/cylinder_cache.h"
 
 using namespace rc;
@@ -305,6 +306,38 @@ TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]
             }
     REQUIRE(fresh.size() == 4);
     REQUIRE(again.blockerListsBuilt == 3);
+
+    // In front of a cheap search (blocker+), a pair met once gets no list: it is bypassed
+    // (searched), and its list is built when it is met again, once
+    const BoundingVolumeHierarchy bvh(*scene);
+    REQUIRE(bvh.cheap());
+    BlockerLists later(*scene, bvh, true, true);
+    Counters once, twice, thrice;
+    std::uint32_t none = std::uint32_t(-1);
+    const BlockerList& met = later.get(later.eyeSite(), 0, none, once);
+    REQUIRE(met.bypass);
+    REQUIRE(met.ids.empty());
+    REQUIRE(once.blockerListsBuilt == 0);
+    REQUIRE(once.hullTests == 0);
+    REQUIRE(later.find(later.eyeSite(), 0) == nullptr);
+    REQUIRE(later.builds() == 0);
+    const BlockerList& second = later.get(later.eyeSite(), 0, none, twice);
+    REQUIRE(&second == &met);
+    REQUIRE(twice.blockerListsBuilt == 1);
+    REQUIRE(twice.hullTests > 0);
+    REQUIRE(later.builds() == 1);
+    REQUIRE(later.find(later.eyeSite(), 0) != nullptr);
+    // The same objects as the list built at once in front of the linear scan
+    REQUIRE(second.bypass == (built.ids.size() > kLongList));
+    if (!second.bypass) {
+        std::vector<int> a = second.ids, b = built.ids;
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        REQUIRE(a == b);
+    }
+    later.get(later.eyeSite(), 0, none, thrice);
+    REQUIRE(thrice.blockerListsBuilt == 0);
+    REQUIRE(later.size() == 1);
 }
 
 TEST_CASE("a cylinder of safety is measured only once a ray may fit in it", "[cache][cylinder]") {

@@ -57,13 +57,18 @@ RenderOptions small(CacheKind cache, OrderKind order) {
 TEST_CASE("A restored checkpoint steps on exactly as the render did, for every cache and order", "[checkpoint]") {
     for (const std::string spec : {"cube:3", "pair"}) {
         auto scene = std::make_shared<const Scene>(makeBuiltin(spec));
+        // In front of a BVH blocker+ builds a list on its pair's second meeting: a checkpoint
+        // restores the lists built since to unbuilt
+        for (AccelKind accel : {AccelKind::Linear, AccelKind::Bvh})
         for (CacheKind cache : allCacheKinds()) {
             for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst, OrderKind::Progressive}) {
-                INFO(spec << " " << toString(cache) << " " << toString(order));
-                RenderSession direct(scene, small(cache, order));
+                INFO(spec << " " << toString(cache) << " " << toString(order) << " " << toString(accel));
+                RenderOptions o = small(cache, order);
+                o.accel = accel;
+                RenderSession direct(scene, o);
                 while (direct.step()) {
                 }
-                RenderSession s(scene, small(cache, order));
+                RenderSession s(scene, o);
                 Listener first;
                 s.addSink(&first);
                 // Two checkpoints, the second sharing the scanlines that did not change

@@ -25,6 +25,7 @@ namespace {
 /// The blocker cache at a checkpoint: how many lists were built, and the entries by origin.
 struct BlockerCheckpoint final : StrategyCheckpoint {
     std::size_t lists = 0;  ///< the lists are a log: the checkpoint keeps its length
+    std::uint64_t builds = 0;  ///< and how many of them were built
     std::vector<CacheEntry> byOrigin;
     std::size_t bytes() const override { return byOrigin.size() * sizeof(CacheEntry); }
 };
@@ -33,6 +34,7 @@ struct BlockerCheckpoint final : StrategyCheckpoint {
 std::unique_ptr<StrategyCheckpoint> BlockerCache::checkpoint() const {
     auto c = std::make_unique<BlockerCheckpoint>();
     c->lists = lists_.size();
+    c->builds = lists_.builds();
     c->byOrigin = byOrigin_;
     return c;
 }
@@ -40,7 +42,7 @@ std::unique_ptr<StrategyCheckpoint> BlockerCache::checkpoint() const {
 void BlockerCache::restore(const StrategyCheckpoint* saved) {
     const auto* c = dynamic_cast<const BlockerCheckpoint*>(saved);
     if (!c) throw std::invalid_argument("not a checkpoint of a blocker cache");
-    lists_.truncate(c->lists);
+    lists_.truncate(c->lists, c->builds);
     byOrigin_ = c->byOrigin;
 }
 

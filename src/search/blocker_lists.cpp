@@ -171,12 +171,16 @@ std::uint32_t BlockerLists::lookup(std::uint64_t key) const {
 
 const std::vector<int>* BlockerLists::find(int origin, int target) const {
     const std::uint32_t number = lookup(key(origin, target));
-    return number == kNoList ? nullptr : &lists_[number].ids;
+    return number == kNoList || lists_[number].unbuilt ? nullptr : &lists_[number].ids;
 }
 
 std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     const std::uint64_t id = key(origin, target);
-    if (const std::uint32_t number = lookup(id); number != kNoList) return number;
+    if (const std::uint32_t number = lookup(id); number != kNoList) {
+        // The second meeting of a pair: now its list pays
+        if (lists_[number].unbuilt) build(number, n);
+        return number;
+    }
     // A new pair: keep the table at most half full
     if (2 * (lists_.size() + 1) > slotKeys_.size()) {
         std::vector<std::uint64_t> keys = std::move(slotKeys_);
@@ -197,6 +201,27 @@ std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     BlockerList& list = lists_.emplace_back();
     list.origin = origin;
     list.target = target;
+    if (stepAside_) {
+        // [list-on-second-meeting]
+        // In front of a cheap search, a list costs more to build (a hundred-odd hull tests)
+        // than a search, so it is built only when its pair comes again (balls:4 at 512x512,
+        // bvh, bfs: 12,613 of the 33,198 pairs met are met once; hull tests 3,640,831 before,
+        // 2,059,807 after)
+        list.unbuilt = true;
+        list.bypass = true;
+        return number;
+        // [list-on-second-meeting]
+    }
+    build(number, n);
+    return number;
+}
+
+void BlockerLists::build(std::uint32_t number, Counters& n) {
+    BlockerList& list = lists_[number];
+    const int origin = list.origin, target = list.target;
+    list.bypass = false;
+    list.unbuilt = false;
+    list.builtAt = builds_++;
     // [build-blocker-list]
     // Every object whose bounding sphere meets the hull of origin and target may block
     const Sphere a = siteSphere(origin);
@@ -226,7 +251,7 @@ std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
         // Not worth testing: its pair is searched instead
         list.bypass = true;
         ++n.blockerListsBuilt;
-        return number;
+        return;
         // [step-aside-list]
     }
     for (auto& [reach, id] : found_) {
@@ -243,11 +268,17 @@ std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     ++n.blockerListsBuilt;
     n.blockerListEntries += list.ids.size();
     n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());
-    return number;
 }
 
-void BlockerLists::truncate(std::size_t n) {
-    if (n > lists_.size()) throw std::logic_error("BlockerLists::truncate: cannot grow");
+void BlockerLists::truncate(std::size_t n, std::uint64_t builds) {
+    if (n > lists_.size() || builds > builds_) throw std::logic_error("BlockerLists::truncate: cannot grow");
+    // Lists of pairs met before, built since: as they were
+    for (std::size_t k = 0; k < n; ++k) {
+        BlockerList& list = lists_[k];
+        if (list.unbuilt || list.builtAt < builds) continue;
+        list = BlockerList{list.origin, list.target, {}, {}, true, true, 0};
+    }
+    builds_ = builds;
     if (n == lists_.size()) return;
     lists_.resize(n);
     // Open addressing cannot erase in place: put the lists kept back into an empty table

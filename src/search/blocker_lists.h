@@ -28,6 +28,10 @@ struct BlockerList {
     /// instead (a huge polygon's bounding sphere meets nearly every hull it is part of),
     /// and the list is left empty
     bool bypass = false;
+    /// Blocker+ in front of a cheap search: not built yet (its pair was met once), so empty
+    /// and bypassed
+    bool unbuilt = false;
+    std::uint64_t builtAt = 0;  ///< how many lists were built before it (BlockerLists::builds())
 };
 
 /// Lists longer than this are not worth testing in front of a cheap complete search.
@@ -50,7 +54,8 @@ public:
     /// Candidates come from `search` (all objects for a linear scan, nearby cells for a
     /// grid). `tiles`: cut large polygons into tiles (blocker+). `stepAside`: in front of a
     /// cheap search, a list longer than kLongList is left empty and marked `bypass`, its
-    /// building stopped there (blocker+).
+    /// building stopped there; and a pair met for the first time gets no list yet (bypassed
+    /// too): it is built when the pair is met again (blocker+).
     BlockerLists(const Scene& scene, const CompleteSearch& search, bool tiles = false, bool stepAside = false);
 
     int eyeSite() const { return scene_.size(); }
@@ -84,18 +89,22 @@ public:
     const BlockerList& get(int origin, int target, std::uint32_t& memo, Counters& n) {
         if (memo < lists_.size()) {
             const BlockerList& last = lists_[memo];
-            if (last.origin == origin && last.target == target) return last;
+            if (last.origin == origin && last.target == target && !last.unbuilt) return last;
         }
         memo = index(origin, target, n);
         return lists_[memo];
     }
     /// The list if it was built, else nullptr.
     const std::vector<int>* find(int origin, int target) const;
+    /// Pairs met (their lists built or not).
     std::size_t size() const { return lists_.size(); }
-    /// Forgets every list but the first `n` built (n <= size()): the lists are a log that
-    /// only grows, so a checkpoint of a render keeps its length, not a copy. Slow (it
-    /// rebuilds the table); never called while rendering.
-    void truncate(std::size_t n);
+    /// Lists built so far.
+    std::uint64_t builds() const { return builds_; }
+    /// Forgets every pair but the first `n` met (n <= size()), and unbuilds the lists built
+    /// after the first `builds`: the lists are a log that only grows, so a checkpoint of a
+    /// render keeps its length, not a copy. Slow (it rebuilds the table); never called
+    /// while rendering.
+    void truncate(std::size_t n, std::uint64_t builds);
 
 private:
     /// A polygon cut into nu x nv tiles over its box in the plane (corner, e1, e2).
@@ -132,7 +141,10 @@ private:
     std::uint32_t lookup(std::uint64_t key) const;
     /// The number of the pair's list, built first if need be.
     std::uint32_t index(int origin, int target, Counters& n);
+    /// Fills list `number` with its potential blockers.
+    void build(std::uint32_t number, Counters& n);
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
+    std::uint64_t builds_ = 0;
 };
 
 }  // namespace rc
