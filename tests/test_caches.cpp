@@ -119,8 +119,8 @@ public:
     std::string name() const override { return inner_.name(); }
     void cull(SphereCull& c) const override { inner_.cull(c); }
     double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                     double stopBelow = -kNoHit) const override {
-        return inner_.clearance(a, b, skip, skipToo, cap, stopBelow);
+                     double stopBelow = -kNoHit, int* nearest = nullptr) const override {
+        return inner_.clearance(a, b, skip, skipToo, cap, stopBelow, nearest);
     }
     double nearRadius() const override { return inner_.nearRadius(); }
     bool cheap() const override { return inner_.cheap(); }

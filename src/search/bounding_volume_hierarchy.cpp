@@ -201,9 +201,10 @@ Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
 }
 
 double BoundingVolumeHierarchy::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                                          double stopBelow) const {
+                                          double stopBelow, int* nearest) const {
     SegmentClearance c(a, b, skip, skipToo, cap, stopBelow);
     cullWith(c);
+    if (nearest) *nearest = c.nearest;
     return c.least;
 }
 

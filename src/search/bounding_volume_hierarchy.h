@@ -27,7 +27,7 @@ public:
     template <class Cull>
     void cullWith(Cull& c) const;
     double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                     double stopBelow = -kNoHit) const override;
+                     double stopBelow = -kNoHit, int* nearest = nullptr) const override;
     /// Inner nodes and leaves.
     int nodeCount() const { return int(nodes_.size() + leaves_.size()); }
     /// The deepest leaf (the root is depth 1).

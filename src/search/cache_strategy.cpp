@@ -59,8 +59,15 @@ Vec3 CacheStrategy::segmentEnd(const Query& q, const Answer& a) const {
 
 void CacheStrategy::keepSegment(const Query& q, const Answer& a, CacheEntry& e) const {
     e.cylinder = {q.ray.o, segmentEnd(q, a), -1.0};
-    e.cylinderBelow = kNoHit;
     e.pending = true;
+    // The object that was nearest the last segment is likely near this one: its distance
+    // bounds the radius from above, so a ray straying farther misses with no search at all
+    e.cylinderBelow = kNoHit;
+    const int leaving = e.origin.inside ? -1 : e.origin.object;
+    if (e.nearObject >= 0 && e.nearObject != e.object && e.nearObject != leaving) {
+        SegmentClearance measure(e.cylinder.a, e.cylinder.b, -1, -1, kNoHit, -kNoHit);
+        e.cylinderBelow = measure.distance(scene_.objects[e.nearObject].bound) - slack_;
+    }
 }
 
 void CacheStrategy::buildCylinder(CacheEntry& e, Counters& n) const {
@@ -81,11 +88,14 @@ void CacheStrategy::buildCylinderFor(CacheEntry& e, double need, Counters& n) co
     // RayCache's addition: most cylinders are too narrow for the very next ray (cube:8,
     // blocker, bfs: 56,782 of 65,061). Any object nearer the kept segment than the new
     // ray strays shows it, and the search stops at the first such object it finds
-    if (need > e.cylinderBelow) return;
+    if (need > e.cylinderBelow) {
+        ++n.cylindersRuledOut;
+        return;
+    }
     const int leaving = e.origin.inside ? -1 : e.origin.object;
     const double stop = need + slack_;
     const double clear =
-        search_.clearance(e.cylinder.a, e.cylinder.b, e.object, leaving, search_.nearRadius(), stop);
+        search_.clearance(e.cylinder.a, e.cylinder.b, e.object, leaving, search_.nearRadius(), stop, &e.nearObject);
     // The radius would be at most clear - slack: if the ray needs more, it leaves it
     if (clear < stop && need > clear - slack_) {
         e.cylinderBelow = clear - slack_;

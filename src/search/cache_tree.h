@@ -32,6 +32,8 @@ struct CacheEntry {
     bool pending = false;      ///< cylinder or cone not built yet: built when the entry is next used
     /// While the cylinder is pending: its radius, once measured, is known to be below this
     double cylinderBelow = kNoHit;
+    /// The object that set the last cylinder's radius, or ruled it out (-1: none)
+    int nearObject = -1;
     /// Blocker caches: the number of the list its last ray tested (BlockerLists::get)
     std::uint32_t list = std::uint32_t(-1);
 };

@@ -18,16 +18,17 @@ void CompleteSearch::cull(SphereCull& c) const {
 }
 
 double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                                 double stopBelow) const {
+                                 double stopBelow, int* nearest) const {
     SegmentClearance c(a, b, skip, skipToo, cap, stopBelow);
     cull(c);
+    if (nearest) *nearest = c.nearest;
     return c.least;
 }
 
 double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                               double stopBelow) const {
-    if (regions_) return regions_->clearance(a, b, skip, skipToo, cap, stopBelow);
-    return CompleteSearch::clearance(a, b, skip, skipToo, cap, stopBelow);
+                               double stopBelow, int* nearest) const {
+    if (regions_) return regions_->clearance(a, b, skip, skipToo, cap, stopBelow, nearest);
+    return CompleteSearch::clearance(a, b, skip, skipToo, cap, stopBelow, nearest);
 }
 
 void LinearSearch::cull(SphereCull& c) const {

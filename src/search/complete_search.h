@@ -56,6 +56,7 @@ struct SegmentClearance final : SphereCull {
     void found(int id, double d) override {
         if (id == skip || id == skipToo || !(d < least)) return;
         least = d;
+        nearest = id;
         // Below the stop, the search is over: nothing more can meet the limit
         limit = least < stopBelow ? -kNoHit : least;
     }
@@ -63,7 +64,8 @@ struct SegmentClearance final : SphereCull {
     double invLen2;
     int skip, skipToo;
     double stopBelow;
-    double least;  ///< the clearance so far (at most the cap)
+    double least;      ///< the clearance so far (at most the cap)
+    int nearest = -1;  ///< the object at that distance (-1: none nearer than the cap)
 };
 
 /// Finds the nearest hit over the whole scene. Implementations (a linear scan, a grid, a
@@ -80,9 +82,10 @@ public:
     /// The least distance from segment a-b to the bounding sphere of any object but `skip`
     /// and `skipToo`, at most `cap`: the radius of a cylinder of safety. Once an object
     /// nearer than `stopBelow` is found, that object's distance, an upper bound (so the
-    /// result is exact whenever it is at least `stopBelow`). By default, a cull.
+    /// result is exact whenever it is at least `stopBelow`). By default, a cull. `nearest`,
+    /// if given, is set to the object at the distance returned (-1 for the cap).
     virtual double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                             double stopBelow = -kNoHit) const;
+                             double stopBelow = -kNoHit, int* nearest = nullptr) const;
     /// Cylinders of safety are capped at this radius, so that the objects near the segment
     /// (the cull's hint) are enough to build them (infinite: no cap). Where it is finite,
     /// cull() cannot find the objects near a direction cheaply, so the caches build no
@@ -115,7 +118,7 @@ public:
     Answer nearest(const Query& q, Counters& n) const override;
     void cull(SphereCull& c) const override;
     double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                     double stopBelow = -kNoHit) const override;
+                     double stopBelow = -kNoHit, int* nearest = nullptr) const override;
     std::string name() const override { return "linear"; }
     bool cheap() const override { return false; }
 

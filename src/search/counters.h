@@ -52,8 +52,8 @@ struct Counters {
     std::uint64_t blockerListMax = 0;
     std::uint64_t hullTests = 0;        ///< sphere-versus-hull tests made building lists
     std::uint64_t cylindersBuilt = 0;   ///< safety cylinders (and empty cones) computed
-    /// Cylinders of safety not computed: an object found nearer to the kept segment than a
-    /// new ray strays showed the cylinder too narrow for it, before it was measured
+    /// Rays that left a cylinder of safety before it was measured: an object nearer the kept
+    /// segment than the ray strays was found (or already known), so it was not built for them
     std::uint64_t cylindersRuledOut = 0;
 
     std::uint64_t totalRays() const { return rays[0] + rays[1] + rays[2] + rays[3]; }
