@@ -128,7 +128,7 @@ RenderOptions RenderFlags::options() const {
     o.accel = *parseAccelKind(accel);
     o.shading.maxDepth = depth;
     o.shading.cutoff = cutoff;
-    o.band = band == kAutoBand ? bandFor(o.accel) : band;  // so the statistics name it
+    o.band = band;
     o.verify = verify;
     o.shading.sampling = sampling;
     o.shading.sampling.seed = seed;
@@ -149,6 +149,7 @@ int renderCommand(const RenderArgs& a) {
     RenderOptions options = a.flags.options();
     if (options.width <= 0) options.width = scene->camera.width;
     if (options.height <= 0) options.height = scene->camera.height;
+    if (options.band == kAutoBand) options.band = bandFor(options.accel);  // so the statistics name it
     BeamTreeBuilder beams(options.width, options.height);
 
     using Clock = std::chrono::steady_clock;
