@@ -60,6 +60,11 @@ void CacheTreePanel::refresh(const SessionState* state) {
             holds = QString("cylinder R = %1").arg(e.cylinder.radius, 0, 'g', 4);
         } else if (e.coneAngle >= 0.0) {
             holds = QString("empty cone %1°").arg(e.coneAngle * 180.0 / M_PI, 0, 'g', 3);
+        } else if (e.pending && e.state == rc::CacheEntry::State::Loaded) {
+            // A cylinder is measured only once a ray may fit in it
+            holds = e.cylinderBelow < rc::kNoHit
+                        ? QString("cylinder R < %1, not measured yet").arg(e.cylinderBelow, 0, 'g', 4)
+                        : QString("built when next used");
         }
         item->setText(4, holds);
     }
