@@ -18,7 +18,6 @@
 
 namespace rc {
 
-/// Everything a render is told.
 /// RenderOptions::band: chosen by the complete search (bandFor()).
 inline constexpr int kAutoBand = -1;
 
@@ -28,12 +27,13 @@ inline constexpr int kAutoBand = -1;
 /// nearer caches. In front of the linear scan a complete search is dear, and the larger
 /// regions of 16 scanlines save more searches than the memory costs (Table 1 at 512x512,
 /// blocker, bfs, N = 5 and 8: 1 scanline makes as many tests as scanline order, 16 makes
-/// 15-20% fewer and is 2-7% faster). In front of a grid, a BVH or Embree a search is cheap and the memory
-/// is what costs: 1 scanline (`raycache bench --scenes scenes/balls2.nff --width 512
-/// --height 512`, bvh, blocker+, bfs: 157.6 ns a ray with 16 scanlines, 146.0 with 1; the
-/// BVH alone 146.8; tests per ray 6.51 and 6.52).
+/// 15-20% fewer and is 2-7% faster). In front of a grid, a BVH or Embree a search is cheap
+/// and the memory is what costs: 1 scanline (`raycache bench --scenes scenes/balls2.nff
+/// --width 512 --height 512`, bvh, blocker+, bfs: 157.6 ns a ray with 16 scanlines, 146.0
+/// with 1; the BVH alone 146.8; tests per ray 6.51 and 6.52).
 int bandFor(AccelKind accel);
 
+/// Everything a render is told.
 struct RenderOptions {
     int width = 0;    ///< 0: the scene's own resolution
     int height = 0;

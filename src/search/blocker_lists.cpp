@@ -276,7 +276,11 @@ void BlockerLists::truncate(std::size_t n, std::uint64_t builds) {
     for (std::size_t k = 0; k < n; ++k) {
         BlockerList& list = lists_[k];
         if (list.unbuilt || list.builtAt < builds) continue;
-        list = BlockerList{list.origin, list.target, {}, {}, true, true, 0};
+        BlockerList unbuilt;
+        unbuilt.origin = list.origin;
+        unbuilt.target = list.target;
+        unbuilt.bypass = unbuilt.unbuilt = true;
+        list = std::move(unbuilt);
     }
     builds_ = builds;
     if (n == lists_.size()) return;
