@@ -26,7 +26,7 @@
 namespace rc::cli {
 
 namespace {
-const std::vector<std::string> kCaches{"none", "cylinder", "blocker", "blocker+"};
+const std::vector<std::string> kCaches{"none", "cylinder", "blocker", "blocker+", "blocker+dir"};
 const std::vector<std::string> kOrders{"scanline", "progressive", "bfs"};
 
 // The signal (SIGINT, SIGTERM) that asked a render to stop, 0 when none did
@@ -149,7 +149,7 @@ int renderCommand(const RenderArgs& a) {
     RenderOptions options = a.flags.options();
     if (options.width <= 0) options.width = scene->camera.width;
     if (options.height <= 0) options.height = scene->camera.height;
-    if (options.band == kAutoBand) options.band = bandFor(options.accel);  // so the statistics name it
+    if (options.band == kAutoBand) options.band = bandFor(options.accel, options.cache);  // so the statistics name it
     BeamTreeBuilder beams(options.width, options.height);
 
     using Clock = std::chrono::steady_clock;

@@ -21,9 +21,10 @@ struct Config {
     const char* cache;
     const char* order;
 };
-// The paper's blocker cache and RayCache's blocker+ side by side, in both orders
-const Config kConfigs[] = {{"none", "scanline"}, {"cylinder", "scanline"}, {"blocker", "scanline"},
-                           {"blocker+", "scanline"}, {"cylinder", "bfs"}, {"blocker", "bfs"}, {"blocker+", "bfs"}};
+// The paper's blocker cache and RayCache's blocker+ and blocker+dir side by side, in both orders
+const Config kConfigs[] = {{"none", "scanline"},    {"cylinder", "scanline"},    {"blocker", "scanline"},
+                           {"blocker+", "scanline"}, {"blocker+dir", "scanline"}, {"cylinder", "bfs"},
+                           {"blocker", "bfs"},       {"blocker+", "bfs"},         {"blocker+dir", "bfs"}};
 // Hanrahan 1986, Table 1: "Cached" and "Cached, breadth-first" for N = 3, 4, 5
 const std::map<int, std::pair<double, double>> kPaper{{3, {0.53, 0.25}}, {4, {0.29, 0.15}}, {5, {0.20, 0.11}}};
 
@@ -110,7 +111,7 @@ int table1(const Table1Args& a) {
                     1e9 * besides[1] / double(counts[0].totalRays()));
         std::printf("%s: %d objects; beam tree %lld nodes, %.2f rays per pixel, coherence %.2e\n",
                     scene->name.c_str(), scene->size(), (long long)beams.nodes, beams.averageRayTreeSize, beams.coherence);
-        std::printf("  %-20s %8s %7s %8s %10s %13s %10s %12s\n", "configuration", "seconds", "time", "paper", "tests",
+        std::printf("  %-23s %8s %7s %8s %10s %13s %10s %12s\n", "configuration", "seconds", "time", "paper", "tests",
                     "searches/beam", "predicted", "ns/miss own");
         for (int c = 0; c < configs; ++c) {
             const double t = median(times[c]);
@@ -125,7 +126,7 @@ int table1(const Table1Args& a) {
             const double predicted = (base + testSeconds * double(counts[c].intersectionTests)) / t0;
             const double misses = double(counts[c].misses);
             const double ownPerMiss = misses > 0.0 ? 1e9 * (t - predicted * t0) / misses : 0.0;
-            std::printf("  %-20s %8.3f %7.3f %8s %10.3f %13.2f %10.3f %12.0f\n", name.c_str(), t, t / t0, paper.c_str(),
+            std::printf("  %-23s %8.3f %7.3f %8s %10.3f %13.2f %10.3f %12.0f\n", name.c_str(), t, t / t0, paper.c_str(),
                         double(counts[c].intersectionTests) / tests0, perBeam, predicted, ownPerMiss);
             csv << scene->name << ',' << kConfigs[c].cache << ',' << kConfigs[c].order << ',' << t << ',' << t / t0 << ','
                 << counts[c].intersectionTests << ',' << double(counts[c].intersectionTests) / tests0 << ','

@@ -23,7 +23,8 @@ std::vector<std::string> leftOut(const Scene& scene, const RenderOptions* option
         if (!reflective) out.push_back("reflection rays: no material has Ks > 0");
         if (!transparent) out.push_back("refraction rays and interior blocker lists: no transparent objects");
     }
-    if (options && counters && (options->cache == CacheKind::Blocker || options->cache == CacheKind::BlockerPlus)) {
+    if (options && counters && (options->cache == CacheKind::Blocker || options->cache == CacheKind::BlockerPlus ||
+                                  options->cache == CacheKind::BlockerDirections)) {
         // Origins: every object and the eye; targets: every object and every light
         const long long pairs =
             (long long)(scene.size() + 1) * (long long)(scene.size() + scene.lights.size());

@@ -12,7 +12,7 @@ RenderOptions resolved(const Scene& scene, RenderOptions o) {
     if (o.width <= 0 || o.height <= 0) throw std::invalid_argument("image size must be positive");
     if (o.shading.maxDepth < 1) throw std::invalid_argument("depth must be at least 1");
     if (o.rowEnd <= 0) o.rowEnd = o.height;
-    if (o.band == kAutoBand) o.band = bandFor(o.accel);
+    if (o.band == kAutoBand) o.band = bandFor(o.accel, o.cache);
     if (o.band < 0) throw std::invalid_argument("a band must be 0 (the whole image) or more scanlines");
     if (o.rowBegin < 0 || o.rowBegin >= o.rowEnd || o.rowEnd > o.height)
         throw std::invalid_argument("rows must lie within the image and not be empty");
@@ -21,10 +21,12 @@ RenderOptions resolved(const Scene& scene, RenderOptions o) {
 }
 }  // namespace
 
-int bandFor(AccelKind accel) {
+int bandFor(AccelKind accel, CacheKind cache) {
     // [band-for]
-    // Large regions where a complete search is dear; little memory where it is cheap
-    return accel == AccelKind::Linear ? 16 : 1;
+    // Large regions where they save complete searches: in front of the linear scan, where
+    // a search is dear, for a cache that defers its misses. Elsewhere, little memory
+    const bool defers = cache == CacheKind::Cylinder || cache == CacheKind::Blocker || cache == CacheKind::BlockerPlus;
+    return accel == AccelKind::Linear && defers ? 16 : 1;
     // [band-for]
 }
 

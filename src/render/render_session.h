@@ -18,7 +18,7 @@
 
 namespace rc {
 
-/// RenderOptions::band: chosen by the complete search (bandFor()).
+/// RenderOptions::band: chosen by the complete search and the cache (bandFor()).
 inline constexpr int kAutoBand = -1;
 
 /// The band an order works in when none is asked for. Breadth-first order keeps a band's
@@ -30,8 +30,10 @@ inline constexpr int kAutoBand = -1;
 /// 15-20% fewer and is 2-7% faster). In front of a grid, a BVH or Embree a search is cheap
 /// and the memory is what costs: 1 scanline (`raycache bench --scenes scenes/balls2.nff
 /// --width 512 --height 512`, bvh, blocker+, bfs: 157.6 ns a ray with 16 scanlines, 146.0
-/// with 1; the BVH alone 146.8; tests per ray 6.51 and 6.52).
-int bandFor(AccelKind accel);
+/// with 1; the BVH alone 146.8; tests per ray 6.51 and 6.52). Nor does a cache that defers
+/// no miss gain from large regions: blocker+dir answers its misses from lists (cube:5 at
+/// 512x512, linear, bfs: 0.126 s with 16 scanlines, 0.110 with 1; scanline order 0.107).
+int bandFor(AccelKind accel, CacheKind cache);
 
 /// Everything a render is told.
 struct RenderOptions {
@@ -42,7 +44,7 @@ struct RenderOptions {
     OrderKind order = OrderKind::Scanline;
     ShadingOptions shading;
     /// Scanlines per band in breadth-first and progressive orders (0: all; kAutoBand: by
-    /// the complete search, see bandFor())
+    /// the complete search and the cache, see bandFor())
     int band = kAutoBand;
     bool verify = false;  ///< run the complete search beside every cached answer
     /// Trace only scanlines [rowBegin, rowEnd) (rowEnd 0: to the bottom). Parallel renders

@@ -30,6 +30,10 @@ nlohmann::json countersJson(const Counters& n) {
         {"mean_length", n.blockerListsBuilt ? double(n.blockerListEntries) / double(n.blockerListsBuilt) : 0.0},
         {"max_length", n.blockerListMax},
         {"hull_tests", n.hullTests}};
+    j["direction_lists"] = {
+        {"searches", n.directionSearches},
+        {"built", n.directionListsBuilt},
+        {"mean_length", n.directionListsBuilt ? double(n.directionListEntries) / double(n.directionListsBuilt) : 0.0}};
     return j;
 }
 

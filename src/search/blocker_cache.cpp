@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/direction_cone.h"
+
 namespace rc {
 
 namespace {
@@ -17,8 +19,11 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 }  // namespace
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
-    : CacheStrategy(scene, search), plus_(variant == Variant::Plus), lists_(scene, search, plus_, plus_) {
+    : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
+      lists_(scene, search, plus_, plus_) {
     if (plus_) byOrigin_.resize(3 * (std::size_t(scene.size()) + 1));
+    if (directed_ && search.nearRadius() == kNoHit)
+        directions_ = std::make_unique<DirectionLists>(scene, search, lists_);
 }
 
 namespace {
@@ -26,6 +31,7 @@ namespace {
 struct BlockerCheckpoint final : StrategyCheckpoint {
     std::size_t lists = 0;  ///< the lists are a log: the checkpoint keeps its length
     std::uint64_t builds = 0;  ///< and how many of them were built
+    std::size_t directions = 0;  ///< direction lists built (a log too)
     std::vector<CacheEntry> byOrigin;
     std::size_t bytes() const override { return byOrigin.size() * sizeof(CacheEntry); }
 };
@@ -36,6 +42,7 @@ std::unique_ptr<StrategyCheckpoint> BlockerCache::checkpoint() const {
     c->lists = lists_.size();
     c->builds = lists_.builds();
     c->byOrigin = byOrigin_;
+    if (directions_) c->directions = directions_->size();
     return c;
 }
 
@@ -43,6 +50,7 @@ void BlockerCache::restore(const StrategyCheckpoint* saved) {
     const auto* c = dynamic_cast<const BlockerCheckpoint*>(saved);
     if (!c) throw std::invalid_argument("not a checkpoint of a blocker cache");
     lists_.truncate(c->lists, c->builds);
+    if (directions_) directions_->truncate(c->directions);
     byOrigin_ = c->byOrigin;
 }
 
@@ -87,7 +95,21 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
         r.reason = why;
     }
     if (mode == LookupMode::CheapOnly) return {false, {}, Decision::Miss, r.reason};
-    return searchAndReload(q, e, r.reason, n);
+    return searchMissed(q, e, r.reason, n);
+}
+
+Lookup BlockerCache::searchMissed(const Query& q, CacheEntry& e, MissReason why, Counters& n) {
+    if (!directions_) return searchAndReload(q, e, why, n);
+    // [direction-search]
+    // Blocker+dir: only the objects in the ray's direction from its site can be hit, nearest first
+    const BlockerList& list = directions_->get(lists_.originSite(q), q.ray.d, e.directions, n);
+    if (list.bypass) return searchAndReload(q, e, why, n);
+    Answer best;
+    testBlockers(q, list, best, n);
+    ++n.directionSearches;
+    reload(q, best, e, n);
+    return {true, best, Decision::Miss, why};
+    // [direction-search]
 }
 
 Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
@@ -114,6 +136,9 @@ Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, 
     // [blocker-empty]
     // The paper: rays that hit nothing keep the cylinder of safety
     if (!plus_) return probeCylinder(q, e, n);
+    // Blocker+dir: the ray's direction list answers it (no cylinder or cone to build; the
+    // entry holds no object the ray could hit)
+    if (directions_) return {false, {}, Decision::Miss, MissReason::TargetMissed};
     // Blocker+: only the eye's empty cone pays. From an object the cone is narrow (its
     // neighbours are near) and costs as much to build as a cylinder (measured: twice the
     // builds for a tenth fewer searches on cube:5), so objects keep the paper's cylinder.
@@ -184,7 +209,7 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
     e.cylinder.radius = -1.0;
     e.coneAngle = -1.0;
     e.pending = false;
-    if (q.kind != RayKind::Shadow && a.object < 0) {
+    if (q.kind != RayKind::Shadow && a.object < 0 && !directions_) {
         e.coneAxis = q.ray.d;
         keepSegment(q, a, e);
     }
@@ -201,16 +226,7 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
         }
         // How far the axis is from the cone of directions into s, theta - beta, measured
         // without trigonometry as 1 - cos(theta - beta) (negative when the axis is inside)
-        double distance(const Sphere& s) override {
-            const Vec3 v = s.c - from.c;
-            const double dist = glm::length(v);
-            const double sinB = (s.r + reach) / dist;
-            if (!(sinB < 1.0)) return -kNoHit;  // it touches the origin
-            const double cosB = std::sqrt(1.0 - sinB * sinB);
-            const double sinT = glm::length(glm::cross(axis, v)) / dist, cosT = glm::dot(axis, v) / dist;
-            const double gap = 1.0 - (cosT * cosB + sinT * sinB);
-            return sinT * cosB - cosT * sinB < 0.0 ? -gap : gap;
-        }
+        double distance(const Sphere& s) override { return directionGap(from.c, reach, axis, s); }
         // The exact angle, for the few objects that come nearer than any before
         void found(int id, double) override {
             // A ray leaving an object outward cannot meet it again; one heading into it can

@@ -1,9 +1,11 @@
 #pragma once
 /// \file
 /// \brief Hanrahan's cache: the last object hit and its list of potential blockers.
+#include <memory>
 #include <vector>
 
 #include "search/cache_strategy.h"
+#include "search/direction_lists.h"
 
 namespace rc {
 
@@ -27,14 +29,18 @@ namespace rc {
 ///   (searches) where testing its list would cost more than the search.
 class BlockerCache final : public CacheStrategy {
 public:
-    enum class Variant { Paper, Plus };
+    enum class Variant { Paper, Plus, Directions };
     BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant);
-    CacheKind kind() const override { return plus_ ? CacheKind::BlockerPlus : CacheKind::Blocker; }
+    CacheKind kind() const override {
+        return directed_ ? CacheKind::BlockerDirections : plus_ ? CacheKind::BlockerPlus : CacheKind::Blocker;
+    }
     /// Blocker+ in front of a grid or a hierarchy: no. Deferring a ray costs a second
     /// lookup and a place in the queue, more than the search it would save (balls2 at
     /// 512x512, bvh, bfs, band 16: 113,288 complete searches and 212,884 deferrals, against
     /// 127,806 searches and none; the render 2% faster, and 1% fewer tests)
-    bool defersMisses() const override { return !(plus_ && search_.cheap()); }
+    /// Blocker+dir: no either, where its misses test direction lists: a deferral costs more
+    /// than the few tests of a list
+    bool defersMisses() const override { return !(plus_ && (search_.cheap() || directions_)); }
     Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) override;
     const BlockerLists* blockerLists() const override { return &lists_; }
     std::unique_ptr<StrategyCheckpoint> checkpoint() const override;
@@ -57,12 +63,19 @@ private:
     /// Blocker+: keeps the entry under its origin and brings back the one kept for the
     /// query's origin, if any. Returns whether the entry now answers for `q.origin`.
     bool recall(const Query& q, CacheEntry& e);
+    /// A ray the entry cannot answer: blocker+ tests the objects listed in its direction
+    /// (DirectionLists), everything else searches the whole scene; the entry is reloaded.
+    Lookup searchMissed(const Query& q, CacheEntry& e, MissReason why, Counters& n);
 
     bool plus_;
+    bool directed_;  ///< blocker+dir
     BlockerLists lists_;
     /// Blocker+: the entry last used for rays of each (origin site, kind); 3 kinds (shadow
     /// rays keep no entry)
     std::vector<CacheEntry> byOrigin_;
+    /// Blocker+dir, in front of a search that can cull by direction: the objects in each
+    /// direction from each site
+    std::unique_ptr<DirectionLists> directions_;
 };
 
 }  // namespace rc

@@ -155,49 +155,21 @@ Sphere BlockerLists::siteSphere(int site) const {
     return {light.position, light.radius};
 }
 
-std::size_t BlockerLists::slot(std::uint64_t key) const {
-    // Fibonacci hashing into a power-of-two table, then the next free or matching slot
-    const std::size_t mask = slotKeys_.size() - 1;
-    std::size_t k = std::size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
-    while (slotKeys_[k] != 0 && slotKeys_[k] != key + 1) k = (k + 1) & mask;
-    return k;
-}
-
-std::uint32_t BlockerLists::lookup(std::uint64_t key) const {
-    if (slotKeys_.empty()) return kNoList;
-    const std::size_t k = slot(key);
-    return slotKeys_[k] == 0 ? kNoList : slotLists_[k];
-}
-
 const std::vector<int>* BlockerLists::find(int origin, int target) const {
-    const std::uint32_t number = lookup(key(origin, target));
-    return number == kNoList || lists_[number].unbuilt ? nullptr : &lists_[number].ids;
+    const std::uint32_t number = table_.find(key(origin, target));
+    return number == ListTable::kNone || lists_[number].unbuilt ? nullptr : &lists_[number].ids;
 }
 
 std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     const std::uint64_t id = key(origin, target);
-    if (const std::uint32_t number = lookup(id); number != kNoList) {
+    if (const std::uint32_t number = table_.find(id); number != ListTable::kNone) {
         // The second meeting of a pair: now its list pays
         if (lists_[number].unbuilt) build(number, n);
         return number;
     }
-    // A new pair: keep the table at most half full
-    if (2 * (lists_.size() + 1) > slotKeys_.size()) {
-        std::vector<std::uint64_t> keys = std::move(slotKeys_);
-        std::vector<std::uint32_t> lists = std::move(slotLists_);
-        slotKeys_.assign(std::max<std::size_t>(64, 2 * keys.size()), 0);
-        slotLists_.assign(slotKeys_.size(), 0);
-        for (std::size_t k = 0; k < keys.size(); ++k) {
-            if (keys[k] == 0) continue;
-            const std::size_t to = slot(keys[k] - 1);
-            slotKeys_[to] = keys[k];
-            slotLists_[to] = lists[k];
-        }
-    }
-    const std::size_t k = slot(id);
-    slotKeys_[k] = id + 1;
+    // A new pair
     const std::uint32_t number = std::uint32_t(lists_.size());
-    slotLists_[k] = number;
+    table_.insert(id, number, lists_.size() + 1);
     BlockerList& list = lists_.emplace_back();
     list.origin = origin;
     list.target = target;
@@ -261,6 +233,8 @@ void BlockerLists::build(std::uint32_t number, Counters& n) {
     // [build-blocker-list]
     // Nearest first, so a lookup can stop early
     std::sort(found_.begin(), found_.end());
+    list.reach.reserve(found_.size());
+    list.ids.reserve(found_.size());
     for (const auto& [reach, id] : found_) {
         list.reach.push_back(reach);
         list.ids.push_back(id);
@@ -285,17 +259,7 @@ void BlockerLists::truncate(std::size_t n, std::uint64_t builds) {
     builds_ = builds;
     if (n == lists_.size()) return;
     lists_.resize(n);
-    // Open addressing cannot erase in place: put the lists kept back into an empty table
-    std::vector<std::uint64_t> keys(slotKeys_.size(), 0);
-    std::vector<std::uint32_t> lists(slotLists_.size(), 0);
-    keys.swap(slotKeys_);
-    lists.swap(slotLists_);
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-        if (keys[k] == 0 || lists[k] >= n) continue;
-        const std::size_t to = slot(keys[k] - 1);
-        slotKeys_[to] = keys[k];
-        slotLists_[to] = lists[k];
-    }
+    table_.keepBelow(std::uint32_t(n));
 }
 
 }  // namespace rc

@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "search/complete_search.h"
 #include "search/counters.h"
+#include "search/list_table.h"
 #include "search/query.h"
 
 namespace rc {
@@ -132,13 +133,7 @@ private:
     std::vector<int> tileObject_;      ///< per tile, the polygon it belongs to
     int sites_;
     std::deque<BlockerList> lists_;  ///< built lists; a deque keeps references stable
-    /// Open addressing over keys: slot k holds key + 1 (0: empty) and its list's index
-    std::vector<std::uint64_t> slotKeys_;
-    std::vector<std::uint32_t> slotLists_;
-    std::size_t slot(std::uint64_t key) const;
-    static constexpr std::uint32_t kNoList = std::uint32_t(-1);
-    /// The number of a built list, or kNoList. (A lookup per ray: an open-addressed table.)
-    std::uint32_t lookup(std::uint64_t key) const;
+    ListTable table_;  ///< each pair's list by number
     /// The number of the pair's list, built first if need be.
     std::uint32_t index(int origin, int target, Counters& n);
     /// Fills list `number` with its potential blockers.

@@ -17,6 +17,7 @@ std::string_view toString(CacheKind k) {
         case CacheKind::Cylinder: return "cylinder";
         case CacheKind::Blocker: return "blocker";
         case CacheKind::BlockerPlus: return "blocker+";
+        case CacheKind::BlockerDirections: return "blocker+dir";
     }
     return "?";
 }
@@ -142,6 +143,8 @@ std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
         case CacheKind::Cylinder: return std::make_unique<CylinderCache>(scene, search);
         case CacheKind::Blocker: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Paper);
         case CacheKind::BlockerPlus: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Plus);
+        case CacheKind::BlockerDirections:
+            return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Directions);
     }
     return nullptr;
 }

@@ -20,11 +20,13 @@ enum class CacheKind {
     Cylinder,     ///< Speer, DeRose and Barsky's cylinder of safety
     Blocker,      ///< Hanrahan's blocker lists, exactly as the paper describes them
     BlockerPlus,  ///< blocker lists with RayCache's additions (`blocker+`)
+    BlockerDirections,  ///< blocker+ whose misses test the objects listed in their direction (`blocker+dir`)
 };
 std::string_view toString(CacheKind k);
 /// Every cache kind, in the order tables list them.
-constexpr std::array<CacheKind, 4> allCacheKinds() {
-    return {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
+constexpr std::array<CacheKind, 5> allCacheKinds() {
+    return {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus,
+            CacheKind::BlockerDirections};
 }
 std::optional<CacheKind> parseCacheKind(std::string_view s);
 

@@ -36,6 +36,8 @@ struct CacheEntry {
     int nearObject = -1;
     /// Blocker caches: the number of the list its last ray tested (BlockerLists::get)
     std::uint32_t list = std::uint32_t(-1);
+    /// Blocker+: the number of the direction list its last miss tested (DirectionLists::get)
+    std::uint32_t directions = std::uint32_t(-1);
 };
 
 /// How the samples of distributed ray tracing (pixel samples, shadow-ray samples, glossy

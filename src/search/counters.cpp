@@ -55,6 +55,9 @@ Counters& Counters::operator+=(const Counters& o) {
     hullTests += o.hullTests;
     cylindersBuilt += o.cylindersBuilt;
     cylindersRuledOut += o.cylindersRuledOut;
+    directionSearches += o.directionSearches;
+    directionListsBuilt += o.directionListsBuilt;
+    directionListEntries += o.directionListEntries;
     return *this;
 }
 

@@ -55,6 +55,11 @@ struct Counters {
     /// Rays that left a cylinder of safety before it was measured: an object nearer the kept
     /// segment than the ray strays was found (or already known), so it was not built for them
     std::uint64_t cylindersRuledOut = 0;
+    /// Blocker+: misses answered from a list of the objects in their direction, not by a
+    /// complete search (DirectionLists)
+    std::uint64_t directionSearches = 0;
+    std::uint64_t directionListsBuilt = 0;
+    std::uint64_t directionListEntries = 0;  ///< summed over built lists
 
     std::uint64_t totalRays() const { return rays[0] + rays[1] + rays[2] + rays[3]; }
     Counters& operator+=(const Counters& o);

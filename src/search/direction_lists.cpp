@@ -1,0 +1,155 @@
+#include "search/direction_lists.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+
+namespace rc {
+
+namespace {
+/// The direction of point (x, y) of face `face` of the cube [-1, 1]^3: axis face / 2,
+/// negative for odd faces, x and y along the next two axes.
+Vec3 faceDirection(int face, double x, double y) {
+    const int axis = face / 2;
+    Vec3 d{0.0};
+    d[axis] = face % 2 ? -1.0 : 1.0;
+    d[(axis + 1) % 3] = x;
+    d[(axis + 2) % 3] = y;
+    return glm::normalize(d);
+}
+
+/// The objects whose bounding spheres rays leaving a ball in a cone of directions can meet:
+/// those whose spheres, grown by the ball's radius, meet the cone of rays from its centre
+/// (a ray from a point of the ball runs parallel to one from the centre, never farther
+/// than the radius from it).
+struct CellCull final : SphereCull {
+    CellCull(const Vec3& apex, double reach, const Vec3& axis, double cosHalf, std::size_t longest,
+             std::vector<std::pair<double, int>>& out)
+        : apex(apex), reach(reach), axis(axis), cosA(cosHalf), sinA(std::sqrt(1.0 - cosHalf * cosHalf)),
+          longest(longest), out(out) {
+        limit = 0.0;
+    }
+    // [cone-distance]
+    // The distance from the sphere to the cone (negative inside), measured in the half-plane
+    // through the axis: x along it, y away from it. Beside the cone's side it is the
+    // distance to the side; behind the apex, to the apex. A distance is 1-Lipschitz: a lower
+    // bound for any sphere inside s
+    double distance(const Sphere& s) override {
+        const Vec3 v = s.c - apex;
+        const double x = glm::dot(v, axis), y = glm::length(glm::cross(v, axis));
+        const double side = x * cosA + y * sinA < 0.0 ? glm::length(v) : y * cosA - x * sinA;
+        return side - s.r - reach;
+    }
+    // [cone-distance]
+    void found(int id, double) override {
+        out.emplace_back(0.0, id);  // its reach is set once the list is known
+        // Longer than a list worth testing: stop, nothing more can matter
+        if (out.size() > longest) limit = -kNoHit;
+    }
+    Vec3 apex;
+    double reach;
+    Vec3 axis;
+    double cosA, sinA;
+    std::size_t longest;
+    std::vector<std::pair<double, int>>& out;
+};
+}  // namespace
+
+DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites)
+    : scene_(scene), search_(search), sites_(sites) {
+    slack_ = 1e-9 * scene.extent();
+    // A list longer than half the scene is not worth testing: the search is a tight loop
+    longest_ = std::size_t(scene.size()) / 2;
+}
+
+DirectionLists::CellCone DirectionLists::cellCone(int cell, int side) {
+    // Around the direction of the square's centre, out to its farthest corner (a cap holds
+    // a convex spherical square when it holds its corners)
+    const int face = cell / (side * side), i = cell / side % side, j = cell % side;
+    auto at = [&](double u, double v) { return faceDirection(face, -1.0 + 2.0 * u / side, -1.0 + 2.0 * v / side); };
+    CellCone c;
+    c.axis = at(i + 0.5, j + 0.5);
+    for (int corner = 0; corner < 4; ++corner)
+        c.cosHalf = std::min(c.cosHalf, glm::dot(c.axis, at(i + corner % 2, j + corner / 2)));
+    c.cosHalf -= 1e-9;  // rounding only ever widens a cone
+    return c;
+}
+
+int DirectionLists::side(int site) const {
+    // [cells-per-side]
+    // Seen from an object, its neighbours are near and wide: a few cells per face are
+    // enough, and each list serves many rays. Seen from the eye, the whole scene fits in a
+    // cone a few cells wide: the eye's cells are much finer
+    return site == sites_.eyeSite() ? kEyeCellsPerSide : kCellsPerSide;
+    // [cells-per-side]
+}
+
+int DirectionLists::cell(const Vec3& d, int side) {
+    // [direction-cell]
+    // The cube face the direction leaves through, and the square of that face
+    const Vec3 a = glm::abs(d);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    const int face = 2 * axis + (d[axis] < 0.0 ? 1 : 0);
+    auto square = [&](double x) { return std::min(int((x / a[axis] + 1.0) * 0.5 * side), side - 1); };
+    return (face * side + square(d[(axis + 1) % 3])) * side + square(d[(axis + 2) % 3]);
+    // [direction-cell]
+}
+
+const BlockerList& DirectionLists::get(int site, const Vec3& d, std::uint32_t& memo, Counters& n) {
+    const int c = cell(d, side(site));
+    // A path's misses mostly leave the same site in the same cell as its last one
+    if (memo < lists_.size() && lists_[memo].origin == site && lists_[memo].target == c) return lists_[memo];
+    const std::uint64_t key = std::uint64_t(site) * kMostCells + std::uint64_t(c);
+    if (const std::uint32_t number = table_.find(key); number != ListTable::kNone) {
+        memo = number;
+        return lists_[number];
+    }
+    const std::uint32_t number = std::uint32_t(lists_.size());
+    table_.insert(key, number, lists_.size() + 1);
+    memo = number;
+    BlockerList& list = lists_.emplace_back();
+    build(list, site, c, n);
+    return list;
+}
+
+void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
+    list.origin = site;
+    list.target = cell;
+    // [build-direction-list]
+    // Every object whose bounding sphere a ray from the site's sphere in the cell can meet
+    const Sphere from = sites_.siteSphere(site);
+    const CellCone cone = cellCone(cell, side(site));
+    found_.clear();
+    CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, longest_, found_);
+    search_.cull(cull);
+    ++n.directionListsBuilt;
+    if (found_.size() > longest_) {
+        list.bypass = true;  // the complete search is cheaper
+        return;
+    }
+    // Nearest first: a ray that has hit something at t cannot hit first what lies farther
+    for (auto& [reach, id] : found_) {
+        const Sphere& s = scene_.objects[id].bound;
+        reach = glm::length(s.c - from.c) - s.r - from.r - slack_;
+    }
+    std::sort(found_.begin(), found_.end());
+    // [build-direction-list]
+    list.reach.reserve(found_.size());
+    list.ids.reserve(found_.size());
+    for (const auto& [reach, id] : found_) {
+        list.reach.push_back(reach);
+        list.ids.push_back(id);
+    }
+    n.directionListEntries += list.ids.size();
+}
+
+void DirectionLists::truncate(std::size_t n) {
+    if (n > lists_.size()) throw std::logic_error("DirectionLists::truncate: cannot grow");
+    lists_.resize(n);
+    table_.keepBelow(std::uint32_t(n));
+}
+
+}  // namespace rc

@@ -1,0 +1,69 @@
+#pragma once
+/// \file
+/// \brief RayCache's addition (blocker+): the objects a ray can meet, listed per site and
+/// cell of directions, so that a miss tests a few candidates instead of the whole scene.
+///
+/// Hanrahan's cache misses whenever a ray does not hit the object its path last hit, and
+/// rays that hit nothing have no list at all (the paper: "the cache hit test is not very
+/// successful when a ray had not previously hit an object. Improving this case would
+/// significantly speed up the program"). Both then search the whole scene.
+///
+/// The directions around a site are cut into cells, a cube map's squares, each within a
+/// cone of directions. A ray leaving from anywhere in the site's sphere in a direction of
+/// the cone can meet only the objects whose bounding spheres the cone of rays meets
+/// (directionGap): the cell's list. A miss then tests that list, nearest first, and is
+/// answered exactly; the list is built the first time its (site, cell) is met, like a
+/// blocker list, and kept. This is in the spirit of Arvo and Kirk's ray classification
+/// (1987), a year after the paper, grown lazily from the rays that ask.
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "search/blocker_lists.h"
+#include "search/list_table.h"
+
+namespace rc {
+
+/// Lists of the objects rays leaving a site in a cell of directions can meet.
+class DirectionLists {
+public:
+    /// Cells per side of each of the cube's six faces, around an object (or tile)
+    static constexpr int kCellsPerSide = 3;
+    /// And around the eye
+    static constexpr int kEyeCellsPerSide = 32;
+    /// Sites are those of `sites` (objects, the eye, tiles); candidates come from `search`.
+    DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites);
+
+    /// The cell of unit direction `d`, with `side` cells per side of a face.
+    static int cell(const Vec3& d, int side);
+    /// The list of rays leaving `site` in the cell of `d`, built on first use and counted
+    /// in `n`. It is `bypass`ed (empty) when longer than a complete search is worth.
+    /// Tries first the list numbered `memo`, and leaves the list's number there.
+    const BlockerList& get(int site, const Vec3& d, std::uint32_t& memo, Counters& n);
+    /// Lists built so far (in the order built).
+    std::size_t size() const { return lists_.size(); }
+    /// Forgets every list but the first `n` built.
+    void truncate(std::size_t n);
+
+private:
+    /// The cone holding a cell's directions: its axis and the cosine of its half-angle
+    struct CellCone {
+        Vec3 axis{0.0};
+        double cosHalf = 1.0;
+    };
+    static constexpr std::uint64_t kMostCells = 6 * kEyeCellsPerSide * kEyeCellsPerSide;
+    static CellCone cellCone(int cell, int side);
+    /// Cells per side of a face around `site`.
+    int side(int site) const;
+    void build(BlockerList& list, int site, int cell, Counters& n);
+    const Scene& scene_;
+    const CompleteSearch& search_;
+    const BlockerLists& sites_;
+    double slack_;
+    std::size_t longest_;  ///< lists longer than this are bypassed
+    std::deque<BlockerList> lists_;
+    ListTable table_;
+    std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
+};
+
+}  // namespace rc

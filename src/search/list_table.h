@@ -1,0 +1,41 @@
+#pragma once
+/// \file
+/// \brief The index of a log of lists: which list, by number, a key has.
+#include <cstdint>
+#include <vector>
+
+namespace rc {
+
+/// An open-addressed table from 64-bit keys to the numbers of lists kept in a log (a
+/// deque that only grows, or is cut back at a checkpoint). A lookup per ray: no node to
+/// follow, one multiply to hash, and the table at most half full.
+class ListTable {
+public:
+    static constexpr std::uint32_t kNone = std::uint32_t(-1);
+    /// The number kept for `key`, or kNone.
+    std::uint32_t find(std::uint64_t key) const {
+        if (keys_.empty()) return kNone;
+        const std::size_t k = slot(key);
+        return keys_[k] == 0 ? kNone : numbers_[k];
+    }
+    /// Keeps `number` for `key` (a key not kept yet); `count` keys are kept after it.
+    void insert(std::uint64_t key, std::uint32_t number, std::size_t count);
+    /// Forgets every key whose number is `n` or more.
+    void keepBelow(std::uint32_t n);
+
+private:
+    std::size_t slot(std::uint64_t key) const {
+        // Fibonacci hashing into a power-of-two table, then the next free or matching slot
+        const std::size_t mask = keys_.size() - 1;
+        std::size_t k = std::size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+        while (keys_[k] != 0 && keys_[k] != key + 1) k = (k + 1) & mask;
+        return k;
+    }
+    /// Puts every key of (keys, numbers) below `n` into an empty table of `size` slots.
+    void refill(const std::vector<std::uint64_t>& keys, const std::vector<std::uint32_t>& numbers,
+                std::size_t size, std::uint32_t n);
+    std::vector<std::uint64_t> keys_;  ///< key + 1 (0: empty)
+    std::vector<std::uint32_t> numbers_;
+};
+
+}  // namespace rc
