@@ -15,7 +15,7 @@ namespace rc {
 /// light (the cone from the light), which holds every object that could stand in the
 /// way, so they never need a complete search.
 ///
-/// Two variants share this code:
+/// Three variants share this code:
 /// - `Variant::Paper` (`--cache blocker`) is the paper's algorithm and nothing more:
 ///   every list entry is tested, and rays that hit nothing keep the Speer-DeRose-Barsky
 ///   cylinder of safety, as the paper prescribes.
@@ -27,6 +27,10 @@ namespace rc {
 ///   before a complete search; large polygons cut into tiles, each its own
 ///   site (BlockerLists); and, in front of a grid or a hierarchy, an entry steps aside
 ///   (searches) where testing its list would cost more than the search.
+/// - `Variant::Directions` (`--cache blocker+dir`) is blocker+ whose misses, in front of
+///   the linear scan, test the objects listed for the ray's direction from its site
+///   (DirectionLists) instead of the whole scene. Rays that hit nothing keep no cylinder
+///   or cone: their list answers them. No ray is deferred: a miss is cheap.
 class BlockerCache final : public CacheStrategy {
 public:
     enum class Variant { Paper, Plus, Directions };
@@ -73,8 +77,8 @@ private:
     /// Blocker+: the entry last used for rays of each (origin site, kind); 3 kinds (shadow
     /// rays keep no entry)
     std::vector<CacheEntry> byOrigin_;
-    /// Blocker+dir, in front of a search that can cull by direction: the objects in each
-    /// direction from each site
+    /// Blocker+dir in front of the linear scan: the objects in each direction from each site
+    /// (elsewhere blocker+dir is blocker+)
     std::unique_ptr<DirectionLists> directions_;
 };
 
