@@ -15,6 +15,7 @@
 #include "search/blocker_cache.h"
 #include "search/bounding_volume_hierarchy.h"
 #include "search/cylinder_cache.h"
+#include "search/direction_lists.h"
 
 using namespace rc;
 using rc::testing::Layout;
@@ -61,7 +62,7 @@ TEST_CASE("every strategy returns what the complete search returns, ray by ray",
             const Scene scene = testing::randomScene(layout, seed);
             const LinearSearch linear(scene);
             const std::vector<Query> queries = queryStream(scene, seed * 31);
-            for (CacheKind kind : {CacheKind::Cylinder, CacheKind::Blocker}) {
+            for (CacheKind kind : {CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerDirections}) {
                 auto strategy = makeStrategy(kind, scene, linear);
                 CacheEntry entries[kRayKinds + 2];  // one per kind and light, like a small cache tree
                 Counters n, scratch;
@@ -462,4 +463,99 @@ TEST_CASE("a tiled polygon is listed when a tile meets the hull: the tiles under
     // Both outcomes occur: tiles keep polygons whose bounding sphere meets the hull out
     REQUIRE(listedTiled > 20);
     REQUIRE(leftOutTiled > 20);
+}
+
+TEST_CASE("a direction list holds every object a ray leaving its site in its cell can hit", "[cache][directions]") {
+    // Rays leave random points of each site (an object's surface, a tile of a large polygon,
+    // the eye) in random directions; every object the ray hits, anywhere along it, must be
+    // on the list of its site and cell
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::string rings = std::string(RAYCACHE_SCENES_DIR) + "/rings2.nff";
+    for (const std::string& spec : {std::string("cube:4"), std::string("balls:1"), std::string("glass"), rings}) {
+        const Scene scene = loadScene(spec);
+        const LinearSearch linear(scene);
+        const BlockerLists sites(scene, linear, true);
+        DirectionLists directions(scene, linear, sites);
+        Counters n;
+        std::uint64_t checked = 0, listed = 0, entries = 0;
+        for (int ray = 0; ray < 6000; ++ray) {
+            const int id = ray % (scene.size() + 1) - 1;  // -1: the eye
+            Vec3 o = scene.camera.from;
+            RayOrigin origin;
+            if (id >= 0) {
+                // A point of the object's bounding sphere, on the surface for a sphere
+                const Sphere b = scene.objects[id].bound;
+                const Vec3 dir = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+                o = b.c + dir * (scene.objects[id].shape == Shape::Sphere ? b.r : b.r * std::abs(u(rng)));
+                if (scene.objects[id].shape == Shape::Polygon) {
+                    // onto the polygon's plane, so a tile holds it
+                    const Polygon& poly = scene.polygons[scene.objects[id].index];
+                    o -= glm::dot(o - poly.vertices[0], poly.normal) * poly.normal;
+                    if (glm::length(o - b.c) > b.r) continue;
+                }
+                origin = {id, false};
+            }
+            const Vec3 d = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+            const int site = id >= 0 ? sites.pointSite(id, o) : sites.eyeSite();
+            std::uint32_t memo = std::uint32_t(-1);
+            const BlockerList& list = directions.get(site, d, memo, n);
+            REQUIRE(list.origin == site);
+            REQUIRE(list.target == DirectionLists::cell(d, site == sites.eyeSite() ? DirectionLists::kEyeCellsPerSide
+                                                                                     : DirectionLists::kCellsPerSide));
+            if (list.bypass) continue;
+            ++listed;
+            entries += list.ids.size();
+            REQUIRE(std::is_sorted(list.reach.begin(), list.reach.end()));
+            const Ray r{o, d};
+            for (int j = 0; j < scene.size(); ++j) {
+                if (j == id) continue;
+                const double t = scene.intersect(r, j, origin);
+                if (!(t < kNoHit)) continue;
+                ++checked;
+                INFO(spec << ": ray " << ray << " from site " << site << " hits object " << j << " at " << t);
+                const auto at = std::find(list.ids.begin(), list.ids.end(), j);
+                REQUIRE(at != list.ids.end());
+                // No ray reaches it sooner than its reach
+                REQUIRE(list.reach[std::size_t(at - list.ids.begin())] <= t);
+            }
+        }
+        INFO(spec);
+        REQUIRE(checked > 100);
+        // Lists are short, and built once per (site, cell) met
+        REQUIRE(listed > 0);
+        REQUIRE(double(entries) / double(listed) < 0.5 * scene.size());
+        REQUIRE(n.directionListsBuilt == directions.size());
+        REQUIRE(directions.size() < 6000);
+    }
+}
+
+TEST_CASE("blocker+dir answers its misses from direction lists, each built once", "[cache][directions]") {
+    auto scene = std::make_shared<const Scene>(loadScene("cube:5"));
+    RenderOptions o;
+    o.width = o.height = 96;
+    o.order = OrderKind::BreadthFirst;
+    o.cache = CacheKind::BlockerPlus;
+    RenderSession plus(scene, o);
+    plus.run();
+    o.cache = CacheKind::BlockerDirections;
+    RenderSession dir(scene, o);
+    dir.run();
+    const Counters& a = plus.counters();
+    const Counters& b = dir.counters();
+    REQUIRE(a.directionSearches == 0);
+    REQUIRE(b.directionSearches > 0);
+    // Nearly every complete search of blocker+ becomes a direction search
+    REQUIRE(b.completeSearches * 20 < a.completeSearches);
+    REQUIRE(b.intersectionTests * 3 < a.intersectionTests);
+    // Lists are reused: several misses per list built
+    REQUIRE(b.directionListsBuilt * 3 < b.directionSearches);
+    // No deferral: a miss is answered at once
+    REQUIRE(b.deferrals == 0);
+    REQUIRE(plus.image().rgb8() == dir.image().rgb8());
+    // In front of a hierarchy, no lists: it is blocker+
+    o.accel = AccelKind::Bvh;
+    RenderSession bvh(scene, o);
+    bvh.run();
+    REQUIRE(bvh.counters().directionListsBuilt == 0);
 }
