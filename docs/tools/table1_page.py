@@ -78,6 +78,17 @@ if alone:
               "against `blocker, scanline`): " + ", ".join(f"{s} {x:.2f}x" for s, x in bfs_gain) +
               " (the paper: another 2-3 times). A speed-up below 1 is a slow-down.</div>")
     md.append("")
+# The fastest cached configuration of each scene
+fastest = []
+for scene, rs in scenes.items():
+    cached = [(num(r["time_ratio"]), num(r["tests_ratio"]), config(r)) for r in rs if r["cache"] != "none"]
+    if cached:
+        fastest.append((scene, min(cached)))
+if fastest:
+    md.append("<div style=\"margin-top: 1em\"><b>The fastest cache of each scene</b> in this build: " +
+              ", ".join(f"{s} {c[2]} at {c[0]:.2f} of the uncached time ({c[1]:.3f} of its tests)"
+                        for s, c in fastest) + ".</div>")
+    md.append("")
 if searches:
     md.append("<div style=\"margin-top: 1em\"><b>Complete searches per beam</b>, the fewest of any cache in this build: " +
               ", ".join(f"{s} {c[1]:.2f} ({c[0]})" for s, c in searches) +
