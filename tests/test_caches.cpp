@@ -559,3 +559,39 @@ TEST_CASE("blocker+dir answers its misses from direction lists, each built once"
     bvh.run();
     REQUIRE(bvh.counters().directionListsBuilt == 0);
 }
+
+TEST_CASE("blocker+ in front of a hierarchy steps aside on paths whose rays mostly search", "[cache][aside]") {
+    // A sphereflake's small spheres: most rays of most paths miss the cached object, and a
+    // search through the hierarchy makes two or so tests
+    auto flake = std::make_shared<const Scene>(loadScene("balls:3"));
+    RenderOptions o;
+    o.width = o.height = 128;
+    o.order = OrderKind::BreadthFirst;
+    o.accel = AccelKind::Bvh;
+    o.cache = CacheKind::BlockerPlus;
+    RenderSession aside(flake, o);
+    aside.run();
+    const Counters& n = aside.counters();
+    REQUIRE(n.steppedAside > n.totalRays() / 2);
+    REQUIRE(n.steppedAside <= n.completeSearches);
+    // The paper's cache and the linear scan never step aside
+    o.cache = CacheKind::Blocker;
+    RenderSession paper(flake, o);
+    paper.run();
+    REQUIRE(paper.counters().steppedAside == 0);
+    REQUIRE(paper.image().rgb8() == aside.image().rgb8());
+    o.cache = CacheKind::BlockerPlus;
+    o.accel = AccelKind::Linear;
+    o.width = o.height = 32;
+    RenderSession linear(flake, o);
+    linear.run();
+    REQUIRE(linear.counters().steppedAside == 0);
+    // Where the cache answers most rays, few step aside: cube:4's large spheres
+    auto cube = std::make_shared<const Scene>(loadScene("cube:4"));
+    o.accel = AccelKind::Bvh;
+    o.width = o.height = 128;
+    RenderSession kept(cube, o);
+    kept.run();
+    REQUIRE(kept.counters().steppedAside < kept.counters().totalRays() / 3);
+    REQUIRE(kept.counters().hits > 2 * kept.counters().steppedAside);
+}

@@ -24,7 +24,8 @@ nlohmann::json countersJson(const Counters& n) {
                   {"deferrals", n.deferrals},
                   {"verify_disagreements", n.verifyDisagreements},
                   {"cylinders_built", n.cylindersBuilt},
-                  {"cylinders_ruled_out", n.cylindersRuledOut}};
+                  {"cylinders_ruled_out", n.cylindersRuledOut},
+                  {"stepped_aside", n.steppedAside}};
     j["blocker_lists"] = {
         {"built", n.blockerListsBuilt},
         {"mean_length", n.blockerListsBuilt ? double(n.blockerListEntries) / double(n.blockerListsBuilt) : 0.0},

@@ -79,6 +79,27 @@ bool BlockerCache::recall(const Query& q, CacheEntry& e) {
 }
 
 Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
+    if (!plus_ || !search_.cheap() || mode != LookupMode::Full) return lookupEntry(q, e, mode, n);
+    // [path-steps-aside]
+    // Blocker+ in front of a cheap search: a path whose last rays mostly searched anyway
+    // steps aside for the next ones, which search at once: no list is looked up or built
+    if (e.asideFor > 0) {
+        --e.asideFor;
+        ++n.steppedAside;
+        return searchPast(q, q.kind == RayKind::Shadow ? nullptr : &e, mode, n);
+    }
+    const Lookup r = lookupEntry(q, e, mode, n);
+    ++e.tried;
+    e.spared += !r.searched;
+    if (e.tried == kAsideWindow) {
+        if (2 * e.spared < e.tried) e.asideFor = kAsideRays;
+        e.tried = e.spared = 0;
+    }
+    return r;
+    // [path-steps-aside]
+}
+
+Lookup BlockerCache::lookupEntry(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
     MissReason why = unusable(q, e);
     // Shadow rays: the hull of origin and light holds every possible blocker
     if (q.kind == RayKind::Shadow) {

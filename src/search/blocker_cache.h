@@ -54,6 +54,12 @@ protected:
     void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) override;
 
 private:
+    /// Blocker+ in front of a cheap search: a path's window of lookups, and the rays it
+    /// steps aside for when fewer than half of them were answered without a search
+    static constexpr std::uint16_t kAsideWindow = 32;
+    static constexpr std::uint16_t kAsideRays = 1024;
+    /// The lookup itself (lookup() adds the stepping aside of whole paths)
+    Lookup lookupEntry(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup probe(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup shadow(const Query& q, CacheEntry& e, MissReason unusable, LookupMode mode, Counters& n);

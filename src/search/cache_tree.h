@@ -38,6 +38,9 @@ struct CacheEntry {
     std::uint32_t list = std::uint32_t(-1);
     /// Blocker+: the number of the direction list its last miss tested (DirectionLists::get)
     std::uint32_t directions = std::uint32_t(-1);
+    /// Blocker+ in front of a cheap search: lookups in the current window, and how many of
+    /// them were answered without a search; and how many rays are still to search at once
+    std::uint16_t tried = 0, spared = 0, asideFor = 0;
 };
 
 /// How the samples of distributed ray tracing (pixel samples, shadow-ray samples, glossy

@@ -55,6 +55,7 @@ Counters& Counters::operator+=(const Counters& o) {
     hullTests += o.hullTests;
     cylindersBuilt += o.cylindersBuilt;
     cylindersRuledOut += o.cylindersRuledOut;
+    steppedAside += o.steppedAside;
     directionSearches += o.directionSearches;
     directionListsBuilt += o.directionListsBuilt;
     directionListEntries += o.directionListEntries;

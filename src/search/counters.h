@@ -57,6 +57,8 @@ struct Counters {
     std::uint64_t cylindersRuledOut = 0;
     /// Blocker+: misses answered from a list of the objects in their direction, not by a
     /// complete search (DirectionLists)
+    /// Blocker+ in front of a cheap search: rays searched at once, their path having stepped aside
+    std::uint64_t steppedAside = 0;
     std::uint64_t directionSearches = 0;
     std::uint64_t directionListsBuilt = 0;
     std::uint64_t directionListEntries = 0;  ///< summed over built lists
