@@ -128,7 +128,6 @@ Lookup BlockerCache::searchMissed(const Query& q, CacheEntry& e, MissReason why,
     // [direction-search]
     // Blocker+dir: only the objects in the ray's direction from its site can be hit, nearest first
     const BlockerList& list = directions_->get(lists_.originSite(q), q.ray.d, e.directions, n);
-    if (list.bypass) return searchAndReload(q, e, why, n);
     Answer best;
     testBlockers(q, list, best, n);
     ++n.directionSearches;
@@ -209,12 +208,12 @@ void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer&
     const std::size_t size = list.ids.size();
     if (!plus_) {
         // The paper: every potential blocker is tested
-        for (std::size_t i = 0; i < size; ++i) testObject(scene_, q, list.ids[i], best, n);
+        for (std::size_t i = 0; i < size; ++i) testObjectQuickly(scene_, q, list.ids[i], best, n);
         return;
     }
     // Blocker+: nearest first, and none beyond the nearest hit known (or the light) can come first
     for (std::size_t i = 0; i < size && list.reach[i] <= std::min(best.t, q.tmax); ++i)
-        testObject(scene_, q, list.ids[i], best, n);
+        testObjectQuickly(scene_, q, list.ids[i], best, n);
     // [test-blockers]
 }
 

@@ -26,10 +26,9 @@ Vec3 faceDirection(int face, double x, double y) {
 /// (a ray from a point of the ball runs parallel to one from the centre, never farther
 /// than the radius from it).
 struct CellCull final : SphereCull {
-    CellCull(const Vec3& apex, double reach, const Vec3& axis, double cosHalf, std::size_t longest,
-             std::vector<std::pair<double, int>>& out)
+    CellCull(const Vec3& apex, double reach, const Vec3& axis, double cosHalf, std::vector<std::pair<double, int>>& out)
         : apex(apex), reach(reach), axis(axis), cosA(cosHalf), sinA(std::sqrt(1.0 - cosHalf * cosHalf)),
-          longest(longest), out(out) {
+          out(out) {
         limit = 0.0;
     }
     // [cone-distance]
@@ -46,14 +45,11 @@ struct CellCull final : SphereCull {
     // [cone-distance]
     void found(int id, double) override {
         out.emplace_back(0.0, id);  // its reach is set once the list is known
-        // Longer than a list worth testing: stop, nothing more can matter
-        if (out.size() > longest) limit = -kNoHit;
     }
     Vec3 apex;
     double reach;
     Vec3 axis;
     double cosA, sinA;
-    std::size_t longest;
     std::vector<std::pair<double, int>>& out;
 };
 }  // namespace
@@ -61,8 +57,6 @@ struct CellCull final : SphereCull {
 DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites)
     : scene_(scene), search_(search), sites_(sites) {
     slack_ = 1e-9 * scene.extent();
-    // A list longer than half the scene is not worth testing: the search is a tight loop
-    longest_ = std::size_t(scene.size()) / 2;
 }
 
 DirectionLists::CellCone DirectionLists::cellCone(int cell, int side) {
@@ -123,13 +117,9 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
     const Sphere from = sites_.siteSphere(site);
     const CellCone cone = cellCone(cell, side(site));
     found_.clear();
-    CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, longest_, found_);
+    CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, found_);
     search_.cull(cull);
     ++n.directionListsBuilt;
-    if (found_.size() > longest_) {
-        list.bypass = true;  // the complete search is cheaper
-        return;
-    }
     // Nearest first: a ray that has hit something at t cannot hit first what lies farther
     for (auto& [reach, id] : found_) {
         const Sphere& s = scene_.objects[id].bound;

@@ -28,7 +28,7 @@ namespace rc {
 class DirectionLists {
 public:
     /// Cells per side of each of the cube's six faces, around an object (or tile)
-    static constexpr int kCellsPerSide = 3;
+    static constexpr int kCellsPerSide = 2;
     /// And around the eye
     static constexpr int kEyeCellsPerSide = 32;
     /// Sites are those of `sites` (objects, the eye, tiles); candidates come from `search`.
@@ -37,7 +37,7 @@ public:
     /// The cell of unit direction `d`, with `side` cells per side of a face.
     static int cell(const Vec3& d, int side);
     /// The list of rays leaving `site` in the cell of `d`, built on first use and counted
-    /// in `n`. It is `bypass`ed (empty) when longer than a complete search is worth.
+    /// in `n`. Even a long list is worth testing: nearest first, it is left at the first hit.
     /// Tries first the list numbered `memo`, and leaves the list's number there.
     const BlockerList& get(int site, const Vec3& d, std::uint32_t& memo, Counters& n);
     /// Lists built so far (in the order built).
@@ -60,7 +60,6 @@ private:
     const CompleteSearch& search_;
     const BlockerLists& sites_;
     double slack_;
-    std::size_t longest_;  ///< lists longer than this are bypassed
     std::deque<BlockerList> lists_;
     ListTable table_;
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
