@@ -536,12 +536,21 @@ TEST_CASE("a direction list holds every object a ray leaving its site in its cel
     }
 }
 
+namespace {
+/// A square render in breadth-first order.
+RenderOptions breadthFirst(int size, CacheKind cache, AccelKind accel) {
+    RenderOptions o;
+    o.width = o.height = size;
+    o.order = OrderKind::BreadthFirst;
+    o.cache = cache;
+    o.accel = accel;
+    return o;
+}
+}  // namespace
+
 TEST_CASE("blocker+dir answers its misses from direction lists, each built once", "[cache][directions]") {
     auto scene = std::make_shared<const Scene>(loadScene("cube:5"));
-    RenderOptions o;
-    o.width = o.height = 96;
-    o.order = OrderKind::BreadthFirst;
-    o.cache = CacheKind::BlockerPlus;
+    RenderOptions o = breadthFirst(96, CacheKind::BlockerPlus, AccelKind::Linear);
     RenderSession plus(scene, o);
     plus.run();
     o.cache = CacheKind::BlockerDirections;
@@ -570,11 +579,7 @@ TEST_CASE("blocker+ in front of a hierarchy steps aside on paths whose rays most
     // A sphereflake's small spheres: most rays of most paths miss the cached object, and a
     // search through the hierarchy makes two or so tests
     auto flake = std::make_shared<const Scene>(loadScene("balls:3"));
-    RenderOptions o;
-    o.width = o.height = 128;
-    o.order = OrderKind::BreadthFirst;
-    o.accel = AccelKind::Bvh;
-    o.cache = CacheKind::BlockerPlus;
+    RenderOptions o = breadthFirst(128, CacheKind::BlockerPlus, AccelKind::Bvh);
     RenderSession aside(flake, o);
     aside.run();
     const Counters& n = aside.counters();

@@ -226,22 +226,30 @@ void BlockerLists::build(std::uint32_t number, Counters& n) {
         return;
         // [step-aside-list]
     }
-    for (auto& [reach, id] : found_) {
-        const Sphere& s = scene_.objects[id].bound;
-        reach = glm::length(s.c - a.c) - s.r - a.r - slack_;
-    }
-    // [build-blocker-list]
     // Nearest first, so a lookup can stop early
-    std::sort(found_.begin(), found_.end());
-    list.reach.reserve(found_.size());
-    list.ids.reserve(found_.size());
-    for (const auto& [reach, id] : found_) {
-        list.reach.push_back(reach);
-        list.ids.push_back(id);
-    }
+    fillNearestFirst(list, scene_, a, slack_, found_);
+    // [build-blocker-list]
     ++n.blockerListsBuilt;
     n.blockerListEntries += list.ids.size();
     n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());
+}
+
+void fillNearestFirst(BlockerList& list, const Scene& scene, const Sphere& from, double slack,
+                      std::vector<std::pair<double, int>>& found) {
+    // [nearest-first]
+    // No ray from the origin reaches object j before |c_j - c_origin| - r_j - r_origin
+    for (auto& [reach, id] : found) {
+        const Sphere& s = scene.objects[id].bound;
+        reach = glm::length(s.c - from.c) - s.r - from.r - slack;
+    }
+    std::sort(found.begin(), found.end());
+    // [nearest-first]
+    list.reach.reserve(found.size());
+    list.ids.reserve(found.size());
+    for (const auto& [reach, id] : found) {
+        list.reach.push_back(reach);
+        list.ids.push_back(id);
+    }
 }
 
 void BlockerLists::truncate(std::size_t n, std::uint64_t builds) {

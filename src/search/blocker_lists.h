@@ -35,6 +35,11 @@ struct BlockerList {
     std::uint64_t builtAt = 0;  ///< how many lists were built before it (BlockerLists::builds())
 };
 
+/// Fills `list` with the objects of `found` (their distances are overwritten), nearest
+/// first: each with its reach from the sphere `from`, less `slack`.
+void fillNearestFirst(BlockerList& list, const Scene& scene, const Sphere& from, double slack,
+                      std::vector<std::pair<double, int>>& found);
+
 /// Lists longer than this are not worth testing in front of a cheap complete search.
 inline constexpr std::size_t kLongList = 32;
 

@@ -121,18 +121,8 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
     search_.cull(cull);
     ++n.directionListsBuilt;
     // Nearest first: a ray that has hit something at t cannot hit first what lies farther
-    for (auto& [reach, id] : found_) {
-        const Sphere& s = scene_.objects[id].bound;
-        reach = glm::length(s.c - from.c) - s.r - from.r - slack_;
-    }
-    std::sort(found_.begin(), found_.end());
+    fillNearestFirst(list, scene_, from, slack_, found_);
     // [build-direction-list]
-    list.reach.reserve(found_.size());
-    list.ids.reserve(found_.size());
-    for (const auto& [reach, id] : found_) {
-        list.reach.push_back(reach);
-        list.ids.push_back(id);
-    }
     n.directionListEntries += list.ids.size();
 }
 
