@@ -73,7 +73,7 @@ private:
     /// Blocker+: keeps the entry under its origin and brings back the one kept for the
     /// query's origin, if any. Returns whether the entry now answers for `q.origin`.
     bool recall(const Query& q, CacheEntry& e);
-    /// A ray the entry cannot answer: blocker+ tests the objects listed in its direction
+    /// A ray the entry cannot answer: blocker+dir tests the objects listed in its direction
     /// (DirectionLists), everything else searches the whole scene; the entry is reloaded.
     Lookup searchMissed(const Query& q, CacheEntry& e, MissReason why, Counters& n);
 
