@@ -21,7 +21,7 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
       lists_(scene, search, plus_, plus_) {
-    if (plus_) byOrigin_.resize(3 * (std::size_t(scene.size()) + 1));
+    if (plus_) byOrigin_.assign(3 * (std::size_t(scene.size()) + 1), kNotKept);
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
     // tests, fewer than a cell's list holds (balls:4 at 512x512, bvh, bfs: 54.6 million tests
@@ -36,8 +36,11 @@ struct BlockerCheckpoint final : StrategyCheckpoint {
     std::size_t lists = 0;  ///< the lists are a log: the checkpoint keeps its length
     std::uint64_t builds = 0;  ///< and how many of them were built
     std::size_t directions = 0;  ///< direction lists built (a log too)
-    std::vector<CacheEntry> byOrigin;
-    std::size_t bytes() const override { return byOrigin.size() * sizeof(CacheEntry); }
+    std::vector<std::uint32_t> byOrigin;
+    std::vector<CacheEntry> kept;
+    std::size_t bytes() const override {
+        return byOrigin.size() * sizeof(std::uint32_t) + kept.size() * sizeof(CacheEntry);
+    }
 };
 }  // namespace
 
@@ -46,6 +49,7 @@ std::unique_ptr<StrategyCheckpoint> BlockerCache::checkpoint() const {
     c->lists = lists_.size();
     c->builds = lists_.builds();
     c->byOrigin = byOrigin_;
+    c->kept = kept_;
     if (directions_) c->directions = directions_->size();
     return c;
 }
@@ -56,6 +60,7 @@ void BlockerCache::restore(const StrategyCheckpoint* saved) {
     lists_.truncate(c->lists, c->builds);
     if (directions_) directions_->truncate(c->directions);
     byOrigin_ = c->byOrigin;
+    kept_ = c->kept;
 }
 
 bool BlockerCache::recall(const Query& q, CacheEntry& e) {
@@ -63,12 +68,23 @@ bool BlockerCache::recall(const Query& q, CacheEntry& e) {
     // Keep what the entry knows under its own origin, and bring back what is known for
     // this ray's origin: an entry is a fact about its origin, whichever pixel made it
     const int slot = kindSlot(q.kind);
-    auto at = [&](const RayOrigin& o) -> CacheEntry& {
+    auto at = [&](const RayOrigin& o) -> std::uint32_t& {
         const std::size_t site = o.object >= 0 ? std::size_t(o.object) : std::size_t(scene_.size());
         return byOrigin_[3 * site + std::size_t(slot)];
     };
-    if (e.state == CacheEntry::State::Loaded) at(e.origin) = e;
-    const CacheEntry& kept = at(q.origin);
+    if (e.state == CacheEntry::State::Loaded) {
+        // An origin met for the first time gets a place
+        std::uint32_t& k = at(e.origin);
+        if (k == kNotKept) {
+            k = std::uint32_t(kept_.size());
+            kept_.push_back(e);
+        } else {
+            kept_[k] = e;
+        }
+    }
+    const std::uint32_t k = at(q.origin);
+    if (k == kNotKept) return false;
+    const CacheEntry& kept = kept_[k];
     // Only an entry that hit something comes back: an empty one brings a cylinder to
     // build, which the new ray mostly leaves (cube:8 at 512x512, bfs: 25,000 more
     // cylinders built for 63 fewer complete searches)
