@@ -6,8 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "geometry/direction_cone.h"
-
 namespace rc {
 
 namespace {
@@ -266,7 +264,16 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
         }
         // How far the axis is from the cone of directions into s, theta - beta, measured
         // without trigonometry as 1 - cos(theta - beta) (negative when the axis is inside)
-        double distance(const Sphere& s) override { return directionGap(from.c, reach, axis, s); }
+        double distance(const Sphere& s) override {
+            const Vec3 v = s.c - from.c;
+            const double dist = glm::length(v);
+            const double sinB = (s.r + reach) / dist;
+            if (!(sinB < 1.0)) return -kNoHit;  // it touches the origin
+            const double cosB = std::sqrt(1.0 - sinB * sinB);
+            const double sinT = glm::length(glm::cross(axis, v)) / dist, cosT = glm::dot(axis, v) / dist;
+            const double gap = 1.0 - (cosT * cosB + sinT * sinB);
+            return sinT * cosB - cosT * sinB < 0.0 ? -gap : gap;
+        }
         // The exact angle, for the few objects that come nearer than any before
         void found(int id, double) override {
             // A ray leaving an object outward cannot meet it again; one heading into it can

@@ -169,7 +169,7 @@ std::uint32_t BlockerLists::index(int origin, int target, Counters& n) {
     }
     // A new pair
     const std::uint32_t number = std::uint32_t(lists_.size());
-    table_.insert(id, number, lists_.size() + 1);
+    table_.insert(id, number);
     BlockerList& list = lists_.emplace_back();
     list.origin = origin;
     list.target = target;

@@ -36,7 +36,7 @@ struct CacheEntry {
     int nearObject = -1;
     /// Blocker caches: the number of the list its last ray tested (BlockerLists::get)
     std::uint32_t list = std::uint32_t(-1);
-    /// Blocker+: the number of the direction list its last miss tested (DirectionLists::get)
+    /// Blocker+dir: the number of the direction list its last miss tested (DirectionLists::get)
     std::uint32_t directions = std::uint32_t(-1);
     /// Blocker+ in front of a cheap search: lookups in the current window, and how many of
     /// them were answered without a search; and how many rays are still to search at once

@@ -55,10 +55,10 @@ struct Counters {
     /// Rays that left a cylinder of safety before it was measured: an object nearer the kept
     /// segment than the ray strays was found (or already known), so it was not built for them
     std::uint64_t cylindersRuledOut = 0;
-    /// Blocker+: misses answered from a list of the objects in their direction, not by a
-    /// complete search (DirectionLists)
     /// Blocker+ in front of a cheap search: rays searched at once, their path having stepped aside
     std::uint64_t steppedAside = 0;
+    /// Blocker+dir: misses answered from a list of the objects in their direction, not by a
+    /// complete search (DirectionLists)
     std::uint64_t directionSearches = 0;
     std::uint64_t directionListsBuilt = 0;
     std::uint64_t directionListEntries = 0;  ///< summed over built lists

@@ -6,7 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-
 namespace rc {
 
 namespace {
@@ -102,7 +101,7 @@ const BlockerList& DirectionLists::get(int site, const Vec3& d, std::uint32_t& m
         return lists_[number];
     }
     const std::uint32_t number = std::uint32_t(lists_.size());
-    table_.insert(key, number, lists_.size() + 1);
+    table_.insert(key, number);
     memo = number;
     BlockerList& list = lists_.emplace_back();
     build(list, site, c, n);

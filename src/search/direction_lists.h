@@ -11,7 +11,7 @@
 /// The directions around a site are cut into cells, a cube map's squares, each within a
 /// cone of directions. A ray leaving from anywhere in the site's sphere in a direction of
 /// the cone can meet only the objects whose bounding spheres the cone of rays meets
-/// (directionGap): the cell's list. A miss then tests that list, nearest first, and is
+/// (CellCull): the cell's list. A miss then tests that list, nearest first, and is
 /// answered exactly; the list is built the first time its (site, cell) is met, like a
 /// blocker list, and kept. This is in the spirit of Arvo and Kirk's ray classification
 /// (1987), a year after the paper, grown lazily from the rays that ask.

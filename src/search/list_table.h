@@ -18,8 +18,8 @@ public:
         const std::size_t k = slot(key);
         return keys_[k] == 0 ? kNone : numbers_[k];
     }
-    /// Keeps `number` for `key` (a key not kept yet); `count` keys are kept after it.
-    void insert(std::uint64_t key, std::uint32_t number, std::size_t count);
+    /// Keeps `number` for `key` (a key not kept yet).
+    void insert(std::uint64_t key, std::uint32_t number);
     /// Forgets every key whose number is `n` or more.
     void keepBelow(std::uint32_t n);
 
@@ -36,6 +36,7 @@ private:
                 std::size_t size, std::uint32_t n);
     std::vector<std::uint64_t> keys_;  ///< key + 1 (0: empty)
     std::vector<std::uint32_t> numbers_;
+    std::size_t count_ = 0;  ///< keys kept
 };
 
 }  // namespace rc
