@@ -7,7 +7,8 @@ namespace rc {
 BreadthFirstOrder::BreadthFirstOrder(int width, int rowBegin, int rowEnd, int band, int samples, bool cheapTests,
                                      EyeMaker makeEye)
     : width_(width), height_(rowEnd), band_(band > 0 ? std::min(band, rowEnd - rowBegin) : rowEnd - rowBegin),
-      samples_(samples), invWidth_(1.0 / width), cheapTests_(cheapTests), makeEye_(std::move(makeEye)),
+      samples_(samples), invWidth_(1.0 / width), cheapTests_(cheapTests), walks_(band_ == 1 && !cheapTests),
+      makeEye_(std::move(makeEye)),
       nextRow_(rowBegin) {}
 
 bool BreadthFirstOrder::beginPath() {
@@ -39,6 +40,12 @@ bool BreadthFirstOrder::beginPath() {
             }
         }
     }
+    pathActive_ = true;
+    if (walks_) {
+        cursor_ = 0;
+        reach_ = -1;
+        return true;
+    }
     // The fill grid of this path: which pixels of the band have a ray on it. Only the
     // path's own pixels are touched (a deep path may hold a handful of rays), and the
     // scan for the next untouched seed walks them in pixel order
@@ -68,7 +75,6 @@ bool BreadthFirstOrder::beginPath() {
     queue_.clear();
     pending_.clear();
     scan_ = 0;
-    pathActive_ = true;
     return true;
 }
 
@@ -76,6 +82,11 @@ std::optional<Pick> BreadthFirstOrder::next() {
     for (;;) {
         if (!pathActive_ && !beginPath()) return std::nullopt;
         const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
+        if (walks_) {
+            if (auto pick = walk(tasks)) return pick;
+            pathActive_ = false;
+            continue;
+        }
         // [bfs-next]
         // Keep filling the current region with cheap tests only
         if (!queue_.empty()) {
@@ -107,6 +118,20 @@ std::optional<Pick> BreadthFirstOrder::next() {
         inflightSeed_ = true;
         return Pick{&tasks[std::size_t(slot_[seed])], LookupMode::Full};
     }
+}
+
+std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
+    // [bfs-walk]
+    // One scanline, no ray deferred: a region grows only rightward (its left neighbour was
+    // traced before it), so the fill reduces to the path's rays in pixel order, the order
+    // they were spawned in. A ray seeds a new region unless the last one reached its pixel
+    if (cursor_ == tasks.size()) return std::nullopt;
+    const RayTask& task = tasks[cursor_];
+    inflight_ = task.pixel;
+    inflightSeed_ = task.pixel != reach_;
+    regions_ += inflightSeed_;
+    return Pick{&task, LookupMode::Full};
+    // [bfs-walk]
 }
 
 void BreadthFirstOrder::enqueueNeighbours(int local) {
@@ -141,13 +166,22 @@ void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTas
         // A path has at most one ray per pixel: room for a band at once, so it never
         // grows by copying into fresh memory (each new page is a fault; at 512x512, a
         // third of this function's time)
-        if (path.capacity() == 0) path.reserve(state_.size());
+        if (path.capacity() == 0) path.reserve(std::size_t(nextRow_ - bandRow_) * width_);
         path.push_back(std::move(c));
     }
-    state_[inflight_] = Done;
     // [bfs-extend]
     // A seed, or a ray the cache answered with the region's object, extends the region
-    if (inflightSeed_ || d == Decision::Hit || d == Decision::Uncached) enqueueNeighbours(inflight_);
+    const bool extends = inflightSeed_ || d == Decision::Hit || d == Decision::Uncached;
+    if (walks_) {
+        // along the scanline only: to the next pixel
+        ++cursor_;
+        reach_ = extends ? inflight_ + 1 : -1;
+        const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
+        if (cursor_ < tasks.size() && tasks[cursor_].pixel == reach_) peak_ = std::max<std::size_t>(peak_, 1);
+        return;
+    }
+    state_[inflight_] = Done;
+    if (extends) enqueueNeighbours(inflight_);
     // [bfs-extend]
 }
 
@@ -159,12 +193,18 @@ void BreadthFirstOrder::deferred(const RayTask&) {
 FrontierView BreadthFirstOrder::frontier() const {
     FrontierView f;
     if (!pathActive_) return f;
+    f.path = generation_[pathIndex_];
+    f.region = regions_;
+    if (walks_) {
+        // The walk's queue is the next pixel, when the region reaches it
+        const std::vector<RayTask>& tasks = paths_[std::size_t(f.path)];
+        if (cursor_ < tasks.size() && tasks[cursor_].pixel == reach_) f.queued.push_back(reach_);
+        return f;
+    }
     const int base = bandRow_ * width_;
     for (std::size_t i = queue_.head; i < queue_.items.size(); ++i) f.queued.push_back(base + queue_.items[i]);
     for (int q = 0; q < int(state_.size()); ++q)
         if (state_[q] == Deferred) f.deferred.push_back(base + q);
-    f.path = generation_[pathIndex_];
-    f.region = regions_;
     return f;
 }
 

@@ -18,6 +18,10 @@ namespace rc {
 /// ray is traced (searching if it must), then its 4-neighbours are tried with the cheap
 /// cache test only; those that hit extend the region, those that cannot be answered
 /// cheaply are deferred and seed later regions, once the current one is finished.
+///
+/// A band of one scanline whose rays are all asked fully (no cheap tests, nothing
+/// deferred) needs no fill: a region can only grow rightward, so the fill visits each
+/// path's rays in pixel order, and the order walks them (see next()).
 class BreadthFirstOrder final : public RayOrder {
 public:
     /// Scanlines [rowBegin, rowEnd), `band` at a time (0: all).
@@ -41,10 +45,12 @@ private:
     enum State : std::uint8_t { Absent, Unvisited, Queued, Deferred, Done };
     bool beginPath();
     void enqueueNeighbours(int local);
+    std::optional<Pick> walk(const std::vector<RayTask>& tasks);
 
     int width_, height_, band_, samples_;
     double invWidth_;  ///< 1 / width_
     bool cheapTests_;
+    bool walks_;  ///< one scanline, every ray asked fully: the fill is a walk in pixel order
     EyeMaker makeEye_;
     int bandRow_ = 0;   ///< first scanline of the current band
     int nextRow_;       ///< first scanline of the next band
@@ -78,6 +84,9 @@ private:
     PixelQueue queue_;
     PixelQueue pending_;
     int scan_ = 0;
+    /// The walk: the path's next ray, and the pixel its region reaches to (-1: none)
+    std::size_t cursor_ = 0;
+    int reach_ = -1;
     int inflight_ = -1;
     bool inflightSeed_ = false;
     std::size_t peak_ = 0;
