@@ -79,6 +79,7 @@ private:
 
     bool plus_;
     bool directed_;  ///< blocker+dir
+    bool stepsAside_;  ///< blocker+ in front of a cheap search: whole paths may step aside
     BlockerLists lists_;
     /// Blocker+: the entry last used for rays of each (origin site, kind), 3 kinds (shadow
     /// rays keep no entry): its place in kept_, or kNotKept. Only origins met take room

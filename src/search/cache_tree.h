@@ -41,6 +41,8 @@ struct CacheEntry {
     /// Blocker+ in front of a cheap search: lookups in the current window, and how many of
     /// them were answered without a search; and how many rays are still to search at once
     std::uint16_t tried = 0, spared = 0, asideFor = 0;
+    /// Windows failed in a row: each doubles the rays stepped aside for, up to 32 times
+    std::uint8_t failed = 0;
 };
 
 /// How the samples of distributed ray tracing (pixel samples, shadow-ray samples, glossy
