@@ -18,7 +18,7 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
-      stepsAside_(plus_ && search.cheap()), lists_(scene, search, plus_, plus_) {
+      lists_(scene, search, plus_, plus_) {
     if (plus_) byOrigin_.assign(3 * (std::size_t(scene.size()) + 1), kNotKept);
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
@@ -93,29 +93,7 @@ bool BlockerCache::recall(const Query& q, CacheEntry& e) {
 }
 
 Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
-    if (!stepsAside_ || mode != LookupMode::Full) return lookupEntry(q, e, mode, n);
-    // [path-steps-aside]
-    // Blocker+ in front of a cheap search: a path whose last rays mostly searched anyway
-    // steps aside for the next ones, which search at once: no list is looked up or built.
-    // Only the last of them loads the entry, for the lookups that follow
-    if (e.asideFor > 0) {
-        ++n.steppedAside;
-        return searchPast(q, --e.asideFor == 0 && q.kind != RayKind::Shadow ? &e : nullptr, mode, n);
-    }
-    const Lookup r = lookupEntry(q, e, mode, n);
-    ++e.tried;
-    e.spared += !r.searched;
-    if (e.tried == kAsideWindow) {
-        if (2 * e.spared < e.tried) {
-            e.asideFor = std::uint16_t(kAsideRays << e.failed);
-            e.failed = std::min<std::uint8_t>(e.failed + 1, 5);
-        } else {
-            e.failed = 0;
-        }
-        e.tried = e.spared = 0;
-    }
-    return r;
-    // [path-steps-aside]
+    return lookupEntry(q, e, mode, n);
 }
 
 Lookup BlockerCache::lookupEntry(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {

@@ -26,12 +26,13 @@ namespace rc {
 ///   origin, so a ray from an object met before tries the object its rays last hit
 ///   before a complete search; large polygons cut into tiles, each its own
 ///   site (BlockerLists); and, in front of a grid or a hierarchy, an entry steps aside
-///   (searches) where testing its list would cost more than the search.
+///   (searches) where testing its list would cost more than the search, and so does a
+///   whole ray-tree path whose rays mostly search anyway (AsideBlockerCache).
 /// - `Variant::Directions` (`--cache blocker+dir`) is blocker+ whose misses, in front of
 ///   the linear scan, test the objects listed for the ray's direction from its site
 ///   (DirectionLists) instead of the whole scene. Rays that hit nothing keep no cylinder
 ///   or cone: their list answers them. No ray is deferred: a miss is cheap.
-class BlockerCache final : public CacheStrategy {
+class BlockerCache : public CacheStrategy {
 public:
     enum class Variant { Paper, Plus, Directions };
     BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant);
@@ -53,23 +54,20 @@ public:
 protected:
     void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) override;
 
-private:
-    /// Blocker+ in front of a cheap search: a path's window of lookups, and the rays it
-    /// steps aside for when fewer than half of them were answered without a search
-    static constexpr std::uint16_t kAsideWindow = 32;
-    static constexpr std::uint16_t kAsideRays = 1024;
-    /// The lookup itself (lookup() adds the stepping aside of whole paths)
+    /// The lookup of one ray (AsideBlockerCache adds the stepping aside of whole paths)
     Lookup lookupEntry(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
+    /// A ray whose list is not worth testing (BlockerList::bypass): a complete search,
+    /// answered as uncached; the entry, if any, is loaded with what it found. In CheapOnly
+    /// mode it searches nothing: the ray is deferred.
+    Lookup searchPast(const Query& q, CacheEntry* e, LookupMode mode, Counters& n);
+
+private:
     Lookup probe(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     Lookup shadow(const Query& q, CacheEntry& e, MissReason unusable, LookupMode mode, Counters& n);
     void buildCone(CacheEntry& e, Counters& n) const;
     /// Tests the potential blockers of `list` against `q`, keeping the nearest in `best`.
     void testBlockers(const Query& q, const BlockerList& list, Answer& best, Counters& n) const;
-    /// A ray whose list is not worth testing (BlockerList::bypass): a complete search,
-    /// answered as uncached; the entry, if any, is loaded with what it found. In CheapOnly
-    /// mode it searches nothing: the ray is deferred.
-    Lookup searchPast(const Query& q, CacheEntry* e, LookupMode mode, Counters& n);
     /// Blocker+: keeps the entry under its origin and brings back the one kept for the
     /// query's origin, if any. Returns whether the entry now answers for `q.origin`.
     bool recall(const Query& q, CacheEntry& e);
@@ -79,7 +77,6 @@ private:
 
     bool plus_;
     bool directed_;  ///< blocker+dir
-    bool stepsAside_;  ///< blocker+ in front of a cheap search: whole paths may step aside
     BlockerLists lists_;
     /// Blocker+: the entry last used for rays of each (origin site, kind), 3 kinds (shadow
     /// rays keep no entry): its place in kept_, or kNotKept. Only origins met take room

@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "search/aside_blocker_cache.h"
 #include "search/blocker_cache.h"
 #include "search/cylinder_cache.h"
 #include "search/no_cache.h"
@@ -142,9 +143,14 @@ std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
         case CacheKind::None: return std::make_unique<NoCache>(scene, search);
         case CacheKind::Cylinder: return std::make_unique<CylinderCache>(scene, search);
         case CacheKind::Blocker: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Paper);
-        case CacheKind::BlockerPlus: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Plus);
-        case CacheKind::BlockerDirections:
-            return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Directions);
+        case CacheKind::BlockerPlus:
+        case CacheKind::BlockerDirections: {
+            const auto variant =
+                kind == CacheKind::BlockerPlus ? BlockerCache::Variant::Plus : BlockerCache::Variant::Directions;
+            // In front of a cheap search, whole paths step aside where the cache does not pay
+            if (search.cheap()) return std::make_unique<AsideBlockerCache>(scene, search, variant);
+            return std::make_unique<BlockerCache>(scene, search, variant);
+        }
     }
     return nullptr;
 }

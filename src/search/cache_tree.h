@@ -41,7 +41,7 @@ struct CacheEntry {
     /// Blocker+ in front of a cheap search: lookups in the current window, and how many of
     /// them were answered without a search; and how many rays are still to search at once
     std::uint16_t tried = 0, spared = 0, asideFor = 0;
-    /// Windows failed in a row: each doubles the rays stepped aside for, up to 32 times
+    /// Windows failed in a row: each doubles the rays stepped aside for (AsideBlockerCache)
     std::uint8_t failed = 0;
 };
 
