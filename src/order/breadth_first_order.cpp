@@ -176,8 +176,11 @@ void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTas
         // along the scanline only: to the next pixel
         ++cursor_;
         reach_ = extends ? inflight_ + 1 : -1;
-        const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
-        if (cursor_ < tasks.size() && tasks[cursor_].pixel == reach_) peak_ = std::max<std::size_t>(peak_, 1);
+        // (the fill's queue would now hold that pixel, if it is on the path)
+        if (peak_ == 0 && extends) {
+            const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
+            if (cursor_ < tasks.size() && tasks[cursor_].pixel == reach_) peak_ = 1;
+        }
         return;
     }
     state_[inflight_] = Done;
