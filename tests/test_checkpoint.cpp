@@ -58,13 +58,17 @@ TEST_CASE("A restored checkpoint steps on exactly as the render did, for every c
     for (const std::string spec : {"cube:3", "pair"}) {
         auto scene = std::make_shared<const Scene>(makeBuiltin(spec));
         // In front of a BVH blocker+ builds a list on its pair's second meeting: a checkpoint
-        // restores the lists built since to unbuilt
+        // restores the lists built since to unbuilt. Bands of one scanline: breadth-first
+        // order walks the paths of a cache that defers nothing
         for (AccelKind accel : {AccelKind::Linear, AccelKind::Bvh})
+        for (int band : {8, 1})
         for (CacheKind cache : allCacheKinds()) {
             for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst, OrderKind::Progressive}) {
-                INFO(spec << " " << toString(cache) << " " << toString(order) << " " << toString(accel));
+                INFO(spec << " " << toString(cache) << " " << toString(order) << " " << toString(accel) << " band "
+                          << band);
                 RenderOptions o = small(cache, order);
                 o.accel = accel;
+                o.band = band;
                 RenderSession direct(scene, o);
                 while (direct.step()) {
                 }
