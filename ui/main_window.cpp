@@ -346,9 +346,9 @@ void MainWindow::buildToolbars() {
     connect(sceneBox_, &QComboBox::activated, this, [this](int i) { loadScene(sceneBox_->itemData(i).toString()); });
 
     cacheBox_ = new QComboBox(this);
-    for (auto k : {rc::CacheKind::None, rc::CacheKind::Cylinder, rc::CacheKind::Blocker})
-        cacheBox_->addItem(text(rc::toString(k)), int(k));
-    cacheBox_->setCurrentIndex(2);
+    // Every cache, RayCache's blocker+ and blocker+dir beside the paper's two
+    for (auto k : rc::allCacheKinds()) cacheBox_->addItem(text(rc::toString(k)), int(k));
+    cacheBox_->setCurrentIndex(cacheBox_->findData(int(rc::CacheKind::Blocker)));
     render->addWidget(new QLabel(" Cache ", this));
     render->addWidget(cacheBox_);
     connect(cacheBox_, &QComboBox::activated, this, [this](int i) { setCache(rc::CacheKind(cacheBox_->itemData(i).toInt())); });
@@ -381,7 +381,7 @@ void MainWindow::buildToolbars() {
     });
     compareBox_ = new QComboBox(this);
     compareBox_->addItem("off", "off");
-    for (auto c : {rc::CacheKind::None, rc::CacheKind::Cylinder, rc::CacheKind::Blocker})
+    for (auto c : rc::allCacheKinds())
         for (auto o : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
             compareBox_->addItem(toString(CompareChoice{c, o}), toString(CompareChoice{c, o}));
     compareBox_->setToolTip("Compare: run a second render with another cache and order beside this one, in lockstep");
@@ -832,13 +832,13 @@ void MainWindow::updateControls() {
     if (resetAct_) resetAct_->setEnabled(true);
     if (openAct_) openAct_->setEnabled(!busy);
     // Hide the overlays this cache and order cannot draw: no cache has no cylinder, hull or
-    // misses; only the blocker cache has hulls; only breadth-first order has a frontier
+    // misses; only the blocker caches have hulls; only breadth-first order has a frontier
     if (s) {
         const rc::RenderOptions& o = s->session().options();
         const bool cached = o.cache != rc::CacheKind::None;
         if (cylinderAct_) cylinderAct_->setVisible(cached);
         if (missesAct_) missesAct_->setVisible(cached);
-        if (hullAct_) hullAct_->setVisible(o.cache == rc::CacheKind::Blocker);
+        if (hullAct_) hullAct_->setVisible(s->session().strategy().blockerLists() != nullptr);
         if (frontierAct_) frontierAct_->setVisible(o.order == rc::OrderKind::BreadthFirst);
     }
 }
@@ -848,6 +848,14 @@ QStringList MainWindow::sceneChoices() const {
     for (int i = 0; i < sceneBox_->count(); ++i) out << sceneBox_->itemText(i);
     return out;
 }
+
+QStringList MainWindow::cacheChoices() const {
+    QStringList out;
+    for (int i = 0; i < cacheBox_->count(); ++i) out << cacheBox_->itemText(i);
+    return out;
+}
+
+QString MainWindow::cacheShown() const { return cacheBox_->currentText(); }
 
 QStringList MainWindow::offeredOverlays() const {
     QStringList out;

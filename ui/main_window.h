@@ -60,6 +60,9 @@ public:
     void setCache(rc::CacheKind k);
     /// The Scene menu's entries.
     QStringList sceneChoices() const;
+    /// The Cache box's entries, and the one it shows.
+    QStringList cacheChoices() const;
+    QString cacheShown() const;
     /// Labels of the overlay boxes offered for the current cache and order.
     QStringList offeredOverlays() const;
     void setOrder(rc::OrderKind k);

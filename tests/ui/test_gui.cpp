@@ -339,6 +339,22 @@ TEST_CASE("Overlays the cache and order cannot draw are not offered", "[gui][ove
     REQUIRE(all.w.offeredOverlays() == QStringList{"Cylinder", "Hull", "Frontier", "Misses"});
 }
 
+TEST_CASE("Every cache can be chosen, and each blocker cache offers its hulls", "[gui][overlay]") {
+    for (rc::CacheKind k : {rc::CacheKind::BlockerPlus, rc::CacheKind::BlockerDirections}) {
+        Fixture f("pair", k, rc::OrderKind::BreadthFirst);
+        const std::string_view name = rc::toString(k);
+        const QString label = QString::fromUtf8(name.data(), qsizetype(name.size()));
+        INFO(label.toStdString());
+        REQUIRE(f.w.cacheChoices() == QStringList{"none", "cylinder", "blocker", "blocker+", "blocker+dir"});
+        REQUIRE(f.w.cacheShown() == label);
+        REQUIRE(f.w.offeredOverlays().contains("Hull"));
+        REQUIRE(f.w.offeredOverlays().contains("Frontier"));
+        QString error;
+        REQUIRE(f.w.setCompare(label + ":scanline", error));
+        REQUIRE(error.isEmpty());
+    }
+}
+
 TEST_CASE("Heatmaps replace the image", "[gui][overlay]") {
     Fixture f("pair");
     f.state().runUntil(RunGoal::ToStep, 30000);
