@@ -93,6 +93,12 @@ void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
     if (!reasons.isEmpty()) t += "<br><b>miss reasons</b> " + reasons.join(", ");
     if (n.blockerListsBuilt)
         t += QString("<br><b>blocker lists</b> %1 built, longest %2").arg(n.blockerListsBuilt).arg(n.blockerListMax);
+    if (n.directionSearches)
+        t += QString("<br><b>direction lists</b> %1 built, %2 misses answered from them")
+                 .arg(n.directionListsBuilt).arg(n.directionSearches);
+    if (n.steppedAside)
+        t += QString("<br><b>stepped aside</b> %1 rays searched at once: their paths' lookups mostly searched anyway")
+                 .arg(n.steppedAside);
     if (s.order().regions()) t += QString("<br><b>regions</b> %1, queue peak %2").arg(s.order().regions()).arg(s.order().queuePeak());
     // What this scene and these options leave out (no shadow rays without lights, ...)
     for (const std::string& line : rc::leftOut(s.scene(), &s.options()))

@@ -22,6 +22,7 @@
 #include "ray_focus.h"
 #include "ray_tree_panel.h"
 #include "screenshot.h"
+#include "stats_panel.h"
 
 using namespace rcgui;
 
@@ -353,6 +354,28 @@ TEST_CASE("Every cache can be chosen, and each blocker cache offers its hulls", 
         REQUIRE(f.w.setCompare(label + ":scanline", error));
         REQUIRE(error.isEmpty());
     }
+}
+
+TEST_CASE("The statistics say how RayCache's caches answered: direction lists, paths stepped aside", "[gui][stats]") {
+    auto finished = [](Fixture& f) {
+        f.w.runToEnd();
+        f.w.controller().wait();
+        f.w.refresh();
+        QApplication::processEvents();
+        return f.w.statsPanel()->summaryText();
+    };
+    Fixture directed("pair", rc::CacheKind::BlockerDirections, rc::OrderKind::BreadthFirst);
+    const QString d = finished(directed);
+    REQUIRE(directed.state().session().counters().directionSearches > 0);
+    REQUIRE(d.contains("direction lists"));
+    REQUIRE_FALSE(d.contains("stepped aside"));
+    // In front of a hierarchy, blocker+ steps aside on paths whose rays mostly search
+    Fixture aside("pair", rc::CacheKind::BlockerPlus, rc::OrderKind::BreadthFirst);
+    aside.w.setAccel(rc::AccelKind::Bvh);
+    const QString a = finished(aside);
+    REQUIRE(aside.state().session().counters().steppedAside > 0);
+    REQUIRE(a.contains("stepped aside"));
+    REQUIRE_FALSE(a.contains("direction lists"));
 }
 
 TEST_CASE("Heatmaps replace the image", "[gui][overlay]") {
