@@ -4,6 +4,8 @@
 
 #include <QCommandLineParser>
 
+#include "labels.h"
+
 namespace rcgui {
 
 namespace {
@@ -20,6 +22,17 @@ bool parsePair(const QString& s, QChar sep, int& a, int& b) {
     const QStringList parts = s.split(sep);
     return parts.size() == 2 && parseInt(parts[0], 0, 100000, a) && parseInt(parts[1], 0, 100000, b);
 }
+/// Every cache's name, in the order tables list them
+QStringList cacheNames() {
+    QStringList out;
+    for (rc::CacheKind k : rc::allCacheKinds()) out << text(rc::toString(k));
+    return out;
+}
+/// "a, b or c"
+QString oneOf(QStringList names) {
+    const QString last = names.takeLast();
+    return names.join(", ") + " or " + last;
+}
 }  // namespace
 
 std::optional<CompareChoice> parseCompare(const QString& spec, QString& error) {
@@ -27,8 +40,8 @@ std::optional<CompareChoice> parseCompare(const QString& spec, QString& error) {
     const auto cache = rc::parseCacheKind(parts[0].toStdString());
     const auto order = parts.size() == 2 ? rc::parseOrderKind(parts[1].toStdString()) : std::nullopt;
     if (parts.size() != 2 || !cache || !order) {
-        error = "--compare must be CACHE:ORDER, with CACHE none, cylinder, blocker, blocker+ or blocker+dir and ORDER "
-                "scanline, progressive or bfs (e.g. none:scanline), not '" + spec + "'";
+        error = "--compare must be CACHE:ORDER, with CACHE " + oneOf(cacheNames()) +
+                " and ORDER scanline, progressive or bfs (e.g. none:scanline), not '" + spec + "'";
         return std::nullopt;
     }
     return CompareChoice{*cache, *order};
@@ -63,7 +76,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         "With no display (and no QT_QPA_PLATFORM), renders headless to a PNG and exits.");
     p.addPositionalArgument("scene", "an .nff file or a built-in such as cube:4 (default cube:4)", "[scene]");
     const QCommandLineOption help({"h", "help"}, "Show this help.");
-    const QCommandLineOption cache("cache", "none | cylinder | blocker | blocker+ | blocker+dir (default blocker)", "kind");
+    const QCommandLineOption cache("cache", cacheNames().join(" | ") + " (default blocker)", "kind");
     const QCommandLineOption order("order", "scanline | progressive | bfs (default bfs)", "kind");
     const QCommandLineOption width("width", "image width (default: the scene's)", "W");
     const QCommandLineOption height("height", "image height (default: the scene's)", "H");
@@ -121,7 +134,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     }
     if (p.isSet(cache)) {
         const auto k = rc::parseCacheKind(p.value(cache).toStdString());
-        if (!k) { message = "--cache must be none, cylinder, blocker, blocker+ or blocker+dir, not '" + p.value(cache) + "'"; return ParseResult::Error; }
+        if (!k) { message = "--cache must be " + oneOf(cacheNames()) + ", not '" + p.value(cache) + "'"; return ParseResult::Error; }
         out.cache = *k;
     }
     if (p.isSet(order)) {

@@ -56,7 +56,7 @@ const CLI::Validator& outputFile() {
 void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     RenderFlags& f = *this;
     if (cacheAndOrder) {
-        c->add_option("--cache", f.cache, "none | cylinder | blocker (the paper's) | blocker+ (with RayCache's additions)")
+        c->add_option("--cache", f.cache, "none | cylinder | blocker (the paper's) | blocker+ (with RayCache's additions) | blocker+dir (blocker+, its misses answered from direction lists)")
             ->check(CLI::IsMember(kCaches))->capture_default_str();
         c->add_option("--order", f.order, "scanline | progressive | bfs")
             ->check(CLI::IsMember(kOrders))->capture_default_str();

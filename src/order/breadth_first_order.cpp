@@ -134,6 +134,12 @@ std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
     // [bfs-walk]
 }
 
+int BreadthFirstOrder::walkQueued() const {
+    // The fill's queue would hold the next pixel, if the region reaches it and it is on the path
+    const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
+    return reach_ >= 0 && cursor_ < tasks.size() && tasks[cursor_].pixel == reach_ ? reach_ : -1;
+}
+
 void BreadthFirstOrder::enqueueNeighbours(int local) {
     // The pixel's row and column without an integer division (a division per ray costs
     // more than the rest of this function): (local + 1/2) / width is an exact enough quotient
@@ -176,11 +182,8 @@ void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTas
         // along the scanline only: to the next pixel
         ++cursor_;
         reach_ = extends ? inflight_ + 1 : -1;
-        // (the fill's queue would now hold that pixel, if it is on the path)
-        if (peak_ == 0 && extends) {
-            const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
-            if (cursor_ < tasks.size() && tasks[cursor_].pixel == reach_) peak_ = 1;
-        }
+        // The queue holds at most that pixel
+        if (peak_ == 0 && walkQueued() >= 0) peak_ = 1;
         return;
     }
     state_[inflight_] = Done;
@@ -199,9 +202,7 @@ FrontierView BreadthFirstOrder::frontier() const {
     f.path = generation_[pathIndex_];
     f.region = regions_;
     if (walks_) {
-        // The walk's queue is the next pixel, when the region reaches it
-        const std::vector<RayTask>& tasks = paths_[std::size_t(f.path)];
-        if (cursor_ < tasks.size() && tasks[cursor_].pixel == reach_) f.queued.push_back(reach_);
+        if (const int pixel = walkQueued(); pixel >= 0) f.queued.push_back(pixel);
         return f;
     }
     const int base = bandRow_ * width_;

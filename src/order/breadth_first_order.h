@@ -46,6 +46,8 @@ private:
     bool beginPath();
     void enqueueNeighbours(int local);
     std::optional<Pick> walk(const std::vector<RayTask>& tasks);
+    /// The walk: the pixel its queue holds (the path's next ray, reached by the region), or -1
+    int walkQueued() const;
 
     int width_, height_, band_, samples_;
     double invWidth_;  ///< 1 / width_

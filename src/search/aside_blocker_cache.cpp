@@ -15,7 +15,7 @@ Lookup AsideBlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode,
         ++n.completeSearches;
         return {true, search_.nearest(q, n), Decision::Uncached, MissReason::None, true};
     }
-    if (mode != LookupMode::Full) return lookupEntry(q, e, mode, n);
+    if (mode != LookupMode::Full) return BlockerCache::lookup(q, e, mode, n);
     return lookupInWindow(q, e, n);
     // [path-steps-aside]
 }
@@ -24,7 +24,7 @@ Lookup AsideBlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode,
     // [path-window]
     // The path's window: if fewer than half of its lookups were answered without a search,
     // it steps aside, each time in a row twice as long
-    const Lookup r = lookupEntry(q, e, LookupMode::Full, n);
+    const Lookup r = BlockerCache::lookup(q, e, LookupMode::Full, n);
     ++e.tried;
     e.spared += !r.searched;
     if (e.tried == kWindow) {

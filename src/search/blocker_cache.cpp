@@ -93,10 +93,6 @@ bool BlockerCache::recall(const Query& q, CacheEntry& e) {
 }
 
 Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
-    return lookupEntry(q, e, mode, n);
-}
-
-Lookup BlockerCache::lookupEntry(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
     MissReason why = unusable(q, e);
     // Shadow rays: the hull of origin and light holds every possible blocker
     if (q.kind == RayKind::Shadow) {

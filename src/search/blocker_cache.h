@@ -46,6 +46,7 @@ public:
     /// Blocker+dir: no either, where its misses test direction lists: a deferral costs more
     /// than the few tests of a list
     bool defersMisses() const override { return !(plus_ && (search_.cheap() || directions_)); }
+    /// The lookup of one ray (AsideBlockerCache adds the stepping aside of whole paths).
     Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) override;
     const BlockerLists* blockerLists() const override { return &lists_; }
     std::unique_ptr<StrategyCheckpoint> checkpoint() const override;
@@ -54,8 +55,6 @@ public:
 protected:
     void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) override;
 
-    /// The lookup of one ray (AsideBlockerCache adds the stepping aside of whole paths)
-    Lookup lookupEntry(const Query& q, CacheEntry& e, LookupMode mode, Counters& n);
     /// A ray whose list is not worth testing (BlockerList::bypass): a complete search,
     /// answered as uncached; the entry, if any, is loaded with what it found. In CheapOnly
     /// mode it searches nothing: the ray is deferred.

@@ -15,6 +15,7 @@
 
 #include "gui_options.h"
 #include "image_view.h"
+#include "labels.h"
 #include "main_window.h"
 #include "window_fixture.h"
 #include "palette.h"
@@ -343,8 +344,7 @@ TEST_CASE("Overlays the cache and order cannot draw are not offered", "[gui][ove
 TEST_CASE("Every cache can be chosen, and each blocker cache offers its hulls", "[gui][overlay]") {
     for (rc::CacheKind k : {rc::CacheKind::BlockerPlus, rc::CacheKind::BlockerDirections}) {
         Fixture f("pair", k, rc::OrderKind::BreadthFirst);
-        const std::string_view name = rc::toString(k);
-        const QString label = QString::fromUtf8(name.data(), qsizetype(name.size()));
+        const QString label = text(rc::toString(k));
         INFO(label.toStdString());
         REQUIRE(f.w.cacheChoices() == QStringList{"none", "cylinder", "blocker", "blocker+", "blocker+dir"});
         REQUIRE(f.w.cacheShown() == label);
