@@ -1,6 +1,7 @@
 #include "order/breadth_first_order.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace rc {
 
@@ -17,7 +18,10 @@ bool BreadthFirstOrder::beginPath() {
         // The next generation of the ray tree; when none is left, the next band. A path
         // belongs to one generation (its depth), so one buffer per path serves both the
         // rays being traced and those being spawned, and keeps its memory from band to band
-        for (int node : generation_) paths_[node].clear();
+        for (int node : generation_) {
+            paths_[node].clear();
+            pixels_[node].clear();
+        }
         generation_.clear();
         for (int node = 0; node < int(paths_.size()); ++node)
             if (!paths_[node].empty()) generation_.push_back(node);
@@ -31,7 +35,10 @@ bool BreadthFirstOrder::beginPath() {
                 RayTask first;
                 makeEye_(bandRow_ * width_, k, first);
                 const int node = first.node;
-                if (node >= int(paths_.size())) paths_.resize(std::size_t(node) + 1);
+                if (node >= int(paths_.size())) {
+                    paths_.resize(std::size_t(node) + 1);
+                    pixels_.resize(std::size_t(node) + 1);
+                }
                 std::vector<RayTask>& eyes = paths_[node];
                 eyes.clear();
                 eyes.reserve(std::size_t(nextRow_ - bandRow_) * width_);
@@ -46,31 +53,23 @@ bool BreadthFirstOrder::beginPath() {
         reach_ = -1;
         return true;
     }
-    // The fill grid of this path: which pixels of the band have a ray on it. Only the
-    // path's own pixels are touched (a deep path may hold a handful of rays), and the
-    // scan for the next untouched seed walks them in pixel order
+    // The fill grid of this path: which pixels of the band have a ray on it, and which of
+    // the path's rays each holds. Only the path's own pixels are touched (a deep path may
+    // hold a handful of rays), and they are read from the path's list of pixels, not from
+    // its rays: a ray was written a generation ago and has left the nearer caches
     const std::size_t pixels = std::size_t(nextRow_ - bandRow_) * width_;
     if (state_.size() != pixels) {
         state_.assign(pixels, Absent);
         slot_.assign(pixels, -1);
     }
-    const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
-    // An eye path holds the band's pixels in order: its tasks need not be read
-    const bool eyes = tasks.size() == pixels && tasks.front().query.kind == RayKind::Primary;
-    byPixel_.clear();
-    for (int i = 0; i < int(tasks.size()); ++i) {
-        const int local = eyes ? i : tasks[i].pixel - bandRow_ * width_;
-        slot_[local] = i;
-        state_[local] = Unvisited;
-        byPixel_.push_back(local);
-    }
-    // In pixel order: a sparse path sorts its pixels, a dense one reads them off the grid
-    if (8 * tasks.size() < pixels) {
-        std::sort(byPixel_.begin(), byPixel_.end());
-    } else if (!std::is_sorted(byPixel_.begin(), byPixel_.end())) {
-        byPixel_.clear();
-        for (int local = 0; local < int(pixels); ++local)
-            if (state_[local] == Unvisited) byPixel_.push_back(local);
+    const int node = generation_[pathIndex_];
+    const std::vector<int>& local = pixels_[std::size_t(node)];
+    // An eye path holds the band's pixels in order (it has no list: its rays were made here)
+    const int rays = int(paths_[std::size_t(node)].size());
+    for (int i = 0; i < rays; ++i) {
+        const int at = local.empty() ? i : local[std::size_t(i)];
+        slot_[std::size_t(at)] = i;
+        state_[std::size_t(at)] = Unvisited;
     }
     queue_.clear();
     pending_.clear();
@@ -101,14 +100,13 @@ std::optional<Pick> BreadthFirstOrder::next() {
             if (state_[pending_.front()] == Deferred) seed = pending_.front();
             pending_.pop_front();
         }
-        while (seed < 0 && scan_ < int(byPixel_.size())) {
-            if (state_[byPixel_[std::size_t(scan_)]] == Unvisited) seed = byPixel_[std::size_t(scan_)];
-            ++scan_;
-        }
+        if (seed < 0) seed = nextUnvisited();
         // [bfs-next]
         if (seed < 0) {
             // Every ray of this path is traced: its pixels leave the fill grid
-            for (int local : byPixel_) state_[local] = Absent;
+            const std::vector<int>& local = pixels_[std::size_t(generation_[pathIndex_])];
+            if (local.empty()) std::fill(state_.begin(), state_.end(), Absent);
+            for (int at : local) state_[std::size_t(at)] = Absent;
             pathActive_ = false;
             continue;
         }
@@ -132,6 +130,20 @@ std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
     regions_ += inflightSeed_;
     return Pick{&task, LookupMode::Full};
     // [bfs-walk]
+}
+
+int BreadthFirstOrder::nextUnvisited() {
+    // The grid in pixel order, a byte a pixel: memchr looks at many at once
+    const std::size_t from = std::size_t(scan_), size = state_.size();
+    if (from >= size) return -1;
+    const void* found = std::memchr(state_.data() + from, Unvisited, size - from);
+    if (!found) {
+        scan_ = int(size);
+        return -1;
+    }
+    const int seed = int(static_cast<const State*>(found) - state_.data());
+    scan_ = seed + 1;
+    return seed;
 }
 
 int BreadthFirstOrder::walkQueued() const {
@@ -167,7 +179,12 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
 
 void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTask>& children) {
     for (RayTask& c : children) {
-        if (c.node >= int(paths_.size())) paths_.resize(std::size_t(c.node) + 1);
+        if (c.node >= int(paths_.size())) {
+            paths_.resize(std::size_t(c.node) + 1);
+            pixels_.resize(std::size_t(c.node) + 1);
+        }
+        // Its pixel in the band, kept apart for the fill grid (not in the walk, which needs no grid)
+        if (!walks_) pixels_[std::size_t(c.node)].push_back(c.pixel - bandRow_ * width_);
         std::vector<RayTask>& path = paths_[c.node];
         // A path has at most one ray per pixel: room for a band at once, so it never
         // grows by copying into fresh memory (each new page is a fault; at 512x512, a
@@ -215,8 +232,10 @@ FrontierView BreadthFirstOrder::frontier() const {
 std::size_t BreadthFirstOrder::heldBytes() const {
     std::size_t tasks = 0;
     for (const std::vector<RayTask>& p : paths_) tasks += p.size();
-    return tasks * sizeof(RayTask) + paths_.size() * sizeof(std::vector<RayTask>) +
-           (generation_.size() + slot_.size() + byPixel_.size() + queue_.items.size() + pending_.items.size()) *
+    std::size_t pixels = 0;
+    for (const std::vector<int>& p : pixels_) pixels += p.size();
+    return tasks * sizeof(RayTask) + paths_.size() * (sizeof(std::vector<RayTask>) + sizeof(std::vector<int>)) +
+           (pixels + generation_.size() + slot_.size() + queue_.items.size() + pending_.items.size()) *
                sizeof(int) +
            state_.size();
 }

@@ -45,6 +45,8 @@ private:
     enum State : std::uint8_t { Absent, Unvisited, Queued, Deferred, Done };
     bool beginPath();
     void enqueueNeighbours(int local);
+    /// The next untouched pixel of the grid from the scan on, or -1: the seed of a new region
+    int nextUnvisited();
     std::optional<Pick> walk(const std::vector<RayTask>& tasks);
     /// The walk: the pixel its queue holds (the path's next ray, reached by the region), or -1
     int walkQueued() const;
@@ -65,7 +67,9 @@ private:
     // Fill state of the active path, over the pixels of the band
     std::vector<int> slot_;
     std::vector<State> state_;
-    std::vector<int> byPixel_;  ///< the path's pixels (band-local), ascending: the seed scan
+    /// By path, the band-local pixel of each of its rays (none for an eye path, whose rays
+    /// are the band's pixels in order)
+    std::vector<std::vector<int>> pixels_;
     /// First in, first out, in a vector that keeps its memory (a deque frees and takes a
     /// block every hundred-odd pixels: allocations that grow with the rays)
     struct PixelQueue {
@@ -85,7 +89,7 @@ private:
     };
     PixelQueue queue_;
     PixelQueue pending_;
-    int scan_ = 0;
+    int scan_ = 0;  ///< the seed scan: pixels of the grid before it are not untouched
     /// The walk: the path's next ray, and the pixel its region reaches to (-1: none)
     std::size_t cursor_ = 0;
     int reach_ = -1;
