@@ -54,6 +54,9 @@ int bench(const BenchArgs& a) {
     for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst})
         configs.push_back({AccelKind::Linear, CacheKind::None, order, true});
 
+    // One thread: every render on one processor (see pinToCurrentCpu())
+    const int cpu = a.threads == 1 ? pinToCurrentCpu() : -1;
+    if (cpu >= 0) std::printf("Every render ran on processor %d.\n", cpu);
     std::ostringstream csv;
     csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree,ns_per_ray\n";
     for (const std::string& spec : a.scenes) {

@@ -50,9 +50,12 @@ int table1(const Table1Args& a) {
     csv << "scene,cache,order,seconds,time_ratio,intersection_tests,tests_ratio,complete_searches,"
            "beam_nodes,searches_per_beam,paper_time_ratio,misses,besides_search_seconds,test_ns,"
            "predicted_time_ratio,own_ns_per_miss,rays\n";
+    // Every render on one processor (see pinToCurrentCpu())
+    const int cpu = pinToCurrentCpu();
     std::printf("Table 1: %s at %dx%d, depth %d, median of %d runs; time and intersection tests\n"
                 "relative to no cache, complete searches per beam-tree node, the paper's figure beside.\n",
                 a.scenes.empty() ? "cube:N" : "the scenes given", flags.width, flags.height, flags.depth, repeat_);
+    if (cpu >= 0) std::printf("Every render ran on processor %d.\n", cpu);
     std::vector<std::string> specs = a.scenes;
     if (specs.empty())
         for (int N : sizes_) specs.push_back("cube:" + std::to_string(N));
