@@ -62,6 +62,7 @@ bool BreadthFirstOrder::beginPath() {
         state_.assign(pixels, Absent);
         slot_.assign(pixels, -1);
     }
+    // [bfs-grid]
     const int node = generation_[pathIndex_];
     const std::vector<int>& local = pixels_[std::size_t(node)];
     // An eye path holds the band's pixels in order (it has no list: its rays were made here)
@@ -71,6 +72,7 @@ bool BreadthFirstOrder::beginPath() {
         slot_[std::size_t(at)] = i;
         state_[std::size_t(at)] = Unvisited;
     }
+    // [bfs-grid]
     queue_.clear();
     pending_.clear();
     scan_ = 0;
@@ -133,6 +135,7 @@ std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
 }
 
 int BreadthFirstOrder::nextUnvisited() {
+    // [bfs-seed-scan]
     // The grid in pixel order, a byte a pixel: memchr looks at many at once
     const std::size_t from = std::size_t(scan_), size = state_.size();
     if (from >= size) return -1;
@@ -144,6 +147,7 @@ int BreadthFirstOrder::nextUnvisited() {
     const int seed = int(static_cast<const State*>(found) - state_.data());
     scan_ = seed + 1;
     return seed;
+    // [bfs-seed-scan]
 }
 
 int BreadthFirstOrder::walkQueued() const {
