@@ -89,7 +89,7 @@ private:
     };
     PixelQueue queue_;
     PixelQueue pending_;
-    int scan_ = 0;  ///< the seed scan: pixels of the grid before it are not untouched
+    int scan_ = 0;  ///< where the seed scan has reached: no pixel before it is still untouched
     /// The walk: the path's next ray, and the pixel its region reaches to (-1: none)
     std::size_t cursor_ = 0;
     int reach_ = -1;
