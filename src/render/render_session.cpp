@@ -26,7 +26,7 @@ int bandFor(AccelKind accel, CacheKind cache) {
     // Large regions where they save complete searches: in front of the linear scan, where
     // a search is dear, for a cache that defers its misses. Elsewhere, little memory
     const bool defers = cache == CacheKind::Cylinder || cache == CacheKind::Blocker || cache == CacheKind::BlockerPlus;
-    return accel == AccelKind::Linear && defers ? 16 : 1;
+    return accel == AccelKind::Linear && defers ? 8 : 1;
     // [band-for]
 }
 

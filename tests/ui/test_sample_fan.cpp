@@ -159,8 +159,13 @@ TEST_CASE("A fan over the ray limit is cut, and what it draws stays in the view 
     f.w.sceneView()->grab();
     REQUIRE(f.w.sceneView()->caption().contains(QString("the first %1").arg(SampleFan::kMaxRays)));
     ImageView& v = *f.w.imageView();
+    // Zoomed about the selected pixel, which stays at the middle of the view (about the
+    // corner, what shows depends on where in the image the pixel is)
+    const QPointF middle(v.width() / 2.0, v.height() / 2.0);
+    const QPointF at(px % s.width() + 0.5, px / s.width() + 0.5);
     for (double zoom : {1.0, 400.0}) {
-        v.setZoom(v.zoom() * zoom, v.pan());
+        const double z = v.zoom() * zoom;
+        v.setZoom(z, middle - z * at);
         f.w.refresh();
         v.grab();
         const PaintWork& work = f.w.overlayPainter().lastWork();
