@@ -75,8 +75,8 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
         }, "", "NotNaN"))
         ->capture_default_str();
     c->add_option("--band", f.band,
-                  "scanlines per band in bfs and progressive orders (0: whole image; default: 16 in front of "
-                  "the linear scan, 1 in front of a grid, BVH or Embree)")
+                  "scanlines per band in bfs and progressive orders (0: whole image; default: 8 in front of "
+                  "the linear scan for a cache that defers its misses (cylinder, blocker, blocker+), else 1)")
         ->check(CLI::Range(0, 16384));
     c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter and of distributed ray tracing's samples")
         ->capture_default_str();
