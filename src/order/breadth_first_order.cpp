@@ -34,16 +34,9 @@ bool BreadthFirstOrder::beginPath() {
             for (int k = 0; k < samples_; ++k) {
                 RayTask first;
                 makeEye_(bandRow_ * width_, k, first);
-                const int node = first.node;
-                if (node >= int(paths_.size())) {
-                    paths_.resize(std::size_t(node) + 1);
-                    pixels_.resize(std::size_t(node) + 1);
-                }
-                std::vector<RayTask>& eyes = paths_[node];
-                eyes.clear();
-                eyes.reserve(std::size_t(nextRow_ - bandRow_) * width_);
+                std::vector<RayTask>& eyes = pathRays(first.node);
                 for (int p = bandRow_ * width_; p < nextRow_ * width_; ++p) makeEye_(p, k, eyes.emplace_back());
-                generation_.push_back(node);
+                generation_.push_back(first.node);
             }
         }
     }
@@ -134,6 +127,23 @@ std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
     // [bfs-walk]
 }
 
+std::vector<RayTask>& BreadthFirstOrder::pathRays(int node) {
+    if (node >= int(paths_.size())) {
+        paths_.resize(std::size_t(node) + 1);
+        pixels_.resize(std::size_t(node) + 1);
+    }
+    std::vector<RayTask>& rays = paths_[std::size_t(node)];
+    // A path has at most one ray per pixel: room for a band at once, so neither it nor its
+    // list of pixels ever grows by copying into fresh memory (each new page is a fault; at
+    // 512x512, a third of committed()'s time)
+    if (rays.capacity() == 0) {
+        const std::size_t band = std::size_t(nextRow_ - bandRow_) * width_;
+        rays.reserve(band);
+        if (!walks_) pixels_[std::size_t(node)].reserve(band);
+    }
+    return rays;
+}
+
 int BreadthFirstOrder::nextUnvisited() {
     // [bfs-seed-scan]
     // The grid in pixel order, a byte a pixel: memchr looks at many at once
@@ -183,17 +193,9 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
 
 void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTask>& children) {
     for (RayTask& c : children) {
-        if (c.node >= int(paths_.size())) {
-            paths_.resize(std::size_t(c.node) + 1);
-            pixels_.resize(std::size_t(c.node) + 1);
-        }
+        std::vector<RayTask>& path = pathRays(c.node);
         // Its pixel in the band, kept apart for the fill grid (not in the walk, which needs no grid)
         if (!walks_) pixels_[std::size_t(c.node)].push_back(c.pixel - bandRow_ * width_);
-        std::vector<RayTask>& path = paths_[c.node];
-        // A path has at most one ray per pixel: room for a band at once, so it never
-        // grows by copying into fresh memory (each new page is a fault; at 512x512, a
-        // third of this function's time)
-        if (path.capacity() == 0) path.reserve(std::size_t(nextRow_ - bandRow_) * width_);
         path.push_back(std::move(c));
     }
     // [bfs-extend]

@@ -45,6 +45,8 @@ private:
     enum State : std::uint8_t { Absent, Unvisited, Queued, Deferred, Done };
     bool beginPath();
     void enqueueNeighbours(int local);
+    /// The rays of path `node` (a cache tree node), made room for a band of them
+    std::vector<RayTask>& pathRays(int node);
     /// The next untouched pixel of the grid from the scan on, or -1: the seed of a new region
     int nextUnvisited();
     std::optional<Pick> walk(const std::vector<RayTask>& tasks);
