@@ -164,3 +164,36 @@ TEST_CASE("a pixel recorded twice at one path keeps its last key", "[beam]") {
     REQUIRE(b.build().nodes == 1);
     REQUIRE(b.labels(0) == std::vector<int>{0, 0, 0});
 }
+
+TEST_CASE("a path's rays span several blocks: rolled back and merged, none lost", "[beam]") {
+    // 200x100 pixels, more rays than a first block holds (4096): stripes of 10 columns hit
+    // objects 1 and 2 in turn, 20 beams
+    const int w = 200, h = 100;
+    auto stripe = [](int p) { return (p % w) / 10 % 2 + 1; };
+    BeamTreeBuilder b(w, h);
+    for (int p = 0; p < 6000; ++p) b.record(0, p, -1, false, stripe(p));
+    const BeamTreeBuilder::Mark m = b.mark();
+    for (int p = 6000; p < w * h; ++p) b.record(0, p, -1, false, stripe(p));
+    b.record(3, 0, 7, false, 1);
+    REQUIRE(b.storedRays() == w * h + 1);
+    REQUIRE(b.build().nodes == 20 + 1);
+
+    // Back to the mark: rows 0-29 whole, and no path 3
+    b.rollback(m);
+    REQUIRE(b.storedRays() == 6000);
+    REQUIRE(b.paths() == std::vector<int>{0});
+    REQUIRE(b.build().nodes == 20);
+    const std::vector<int> labels = b.labels(0);
+    REQUIRE(labels[5999] >= 0);
+    REQUIRE(labels[6000] == -1);
+
+    // Recording goes on after the rollback; another builder's rays move over under the map
+    for (int p = 6000; p < 8000; ++p) b.record(0, p, -1, false, stripe(p));
+    BeamTreeBuilder other(w, h);
+    for (int p = 8000; p < w * h; ++p) other.record(1, p, -1, false, stripe(p));
+    b.merge(std::move(other), {0, 0});
+    REQUIRE(other.storedRays() == 0);
+    REQUIRE(b.storedRays() == w * h);
+    REQUIRE(b.build().nodes == 20);
+    REQUIRE(b.labels(0)[w * h - 1] == b.labels(0)[w - 1]);
+}

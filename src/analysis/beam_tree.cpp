@@ -1,6 +1,10 @@
 #include "analysis/beam_tree.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <new>
+
+#include <sys/mman.h>
 #include <limits>
 #include <stdexcept>
 
@@ -12,30 +16,84 @@ void BeamTreeBuilder::onEvent(const TraceEvent& e) {
            e.lookup.answer.object);
 }
 
+namespace {
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+constexpr std::size_t kFirstBlock = 4096;  // rays: 48 KB
+}
+
+BeamTreeBuilder::Block::Block(std::size_t n) : capacity(n) {
+    // [beam-log-block]
+    // A block as large as a huge page is asked for as one: the kernel then clears and maps
+    // it in one go, not in 512 faults
+    std::size_t bytes = n * sizeof(Ray);
+    void* p = nullptr;
+    if (bytes >= kHugePage / 2) {
+        bytes = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+        p = std::aligned_alloc(kHugePage, bytes);
+#ifdef MADV_HUGEPAGE
+        if (p) madvise(p, bytes, MADV_HUGEPAGE);
+#endif
+    } else {
+        p = std::malloc(bytes);
+    }
+    // [beam-log-block]
+    if (!p) throw std::bad_alloc();
+    rays.reset(static_cast<Ray*>(p));
+}
+
+void BeamTreeBuilder::Block::Free::operator()(Ray* p) const { std::free(p); }
+
+void BeamTreeBuilder::PathLog::grow() {
+    blocks.emplace_back(blocks.empty() ? kFirstBlock : kHugePage / sizeof(Ray));
+}
+
+void BeamTreeBuilder::PathLog::resize(std::size_t n) {
+    std::size_t kept = 0, b = 0;
+    for (; b < blocks.size() && kept + blocks[b].size <= n; ++b) kept += blocks[b].size;
+    if (b < blocks.size()) {
+        blocks[b].size = n - kept;
+        blocks.erase(blocks.begin() + std::ptrdiff_t(n > kept ? b + 1 : b), blocks.end());
+    }
+    size = n;
+}
+
+void BeamTreeBuilder::PathLog::append(PathLog&& other) {
+    // Blocks move whole: a part-filled one stays part-filled, and the next ray opens a new one
+    for (Block& b : other.blocks) blocks.push_back(std::move(b));
+    size += other.size;
+    other = PathLog{};
+}
+
 void BeamTreeBuilder::record(int path, int pixel, int originObject, bool inside, int hitObject) {
     // Same origin object (and side), same hit object: the same beam
     const std::uint32_t origin = std::uint32_t(originObject + 1) * 2u + (inside ? 1u : 0u);
-    rays_by_path_[path].push_back(Ray{pixel, origin, std::uint32_t(hitObject + 1)});
+    if (std::size_t(path) >= rays_by_path_.size()) rays_by_path_.resize(std::size_t(path) + 1);
+    rays_by_path_[std::size_t(path)].push_back(Ray{pixel, origin, std::uint32_t(hitObject + 1)});
     ++rays_;
 }
 
-void BeamTreeBuilder::merge(const BeamTreeBuilder& other, const std::vector<int>& pathMap) {
-    for (const auto& [path, rays] : other.rays_by_path_) {
-        std::vector<Ray>& to = rays_by_path_[pathMap.at(path)];
-        to.insert(to.end(), rays.begin(), rays.end());
+void BeamTreeBuilder::merge(BeamTreeBuilder&& other, const std::vector<int>& pathMap) {
+    for (std::size_t path = 0; path < other.rays_by_path_.size(); ++path) {
+        if (other.rays_by_path_[path].size == 0) continue;
+        const std::size_t to = std::size_t(pathMap.at(path));
+        if (to >= rays_by_path_.size()) rays_by_path_.resize(to + 1);
+        rays_by_path_[to].append(std::move(other.rays_by_path_[path]));
     }
     rays_ += other.rays_;
+    other.rays_ = 0;
 }
 
 std::vector<int> BeamTreeBuilder::paths() const {
     std::vector<int> p;
-    for (const auto& [path, _] : rays_by_path_) p.push_back(path);
-    std::sort(p.begin(), p.end());
+    for (std::size_t path = 0; path < rays_by_path_.size(); ++path)
+        if (rays_by_path_[path].size > 0) p.push_back(int(path));
     return p;
 }
 
-std::vector<BeamTreeBuilder::Ray> BeamTreeBuilder::byPixel(const std::vector<Ray>& rays) {
-    std::vector<Ray> sorted = rays;
+std::vector<BeamTreeBuilder::Ray> BeamTreeBuilder::byPixel(const PathLog& rays) {
+    std::vector<Ray> sorted;
+    sorted.reserve(rays.size);
+    for (const Block& b : rays.blocks) sorted.insert(sorted.end(), b.begin(), b.end());
     std::stable_sort(sorted.begin(), sorted.end(), [](const Ray& a, const Ray& b) { return a.pixel < b.pixel; });
     // Keep the last of each pixel's rays (a pixel traced again replaces its key)
     std::size_t n = 0;
@@ -81,9 +139,8 @@ int BeamTreeBuilder::labelBeams(const std::vector<Ray>& rays, std::vector<int>& 
 
 std::vector<int> BeamTreeBuilder::labels(int path) const {
     std::vector<int> image(std::size_t(width_) * height_, -1);
-    auto it = rays_by_path_.find(path);
-    if (it == rays_by_path_.end()) return image;
-    const std::vector<Ray> rays = byPixel(it->second);
+    if (path < 0 || std::size_t(path) >= rays_by_path_.size()) return image;
+    const std::vector<Ray> rays = byPixel(rays_by_path_[std::size_t(path)]);
     std::vector<int> label;
     labelBeams(rays, image, label);
     for (std::size_t i = 0; i < rays.size(); ++i) image[std::size_t(rays[i].pixel)] = label[i];
@@ -94,7 +151,8 @@ BeamTreeStats BeamTreeBuilder::build() const {
     BeamTreeStats s;
     std::vector<int> index(std::size_t(width_) * height_, -1);
     std::vector<int> label;
-    for (const auto& [path, rays] : rays_by_path_) s.nodes += labelBeams(byPixel(rays), index, label);
+    for (const PathLog& rays : rays_by_path_)
+        if (rays.size > 0) s.nodes += labelBeams(byPixel(rays), index, label);
     // [coherence]
     s.averageRayTreeSize = double(rays_) / (double(width_) * height_);
     s.coherence = s.nodes > 0 ? s.averageRayTreeSize / double(s.nodes) : 0.0;
@@ -105,20 +163,19 @@ BeamTreeStats BeamTreeBuilder::build() const {
 BeamTreeBuilder::Mark BeamTreeBuilder::mark() const {
     Mark m;
     m.rays = rays_;
-    for (const auto& [path, rays] : rays_by_path_) m.paths.emplace_back(path, rays.size());
+    for (std::size_t path = 0; path < rays_by_path_.size(); ++path)
+        if (rays_by_path_[path].size > 0) m.paths.emplace_back(int(path), rays_by_path_[path].size);
     return m;
 }
 
 void BeamTreeBuilder::rollback(const Mark& m) {
-    std::unordered_map<int, std::vector<Ray>> kept;
+    std::vector<std::size_t> keep(rays_by_path_.size(), 0);
     for (const auto& [path, size] : m.paths) {
-        auto it = rays_by_path_.find(path);
-        if (it == rays_by_path_.end() || it->second.size() < size)
+        if (path < 0 || std::size_t(path) >= rays_by_path_.size() || rays_by_path_[std::size_t(path)].size < size)
             throw std::invalid_argument("BeamTreeBuilder::rollback: a mark of another builder");
-        it->second.resize(size);
-        kept.emplace(path, std::move(it->second));
+        keep[std::size_t(path)] = size;
     }
-    rays_by_path_ = std::move(kept);
+    for (std::size_t path = 0; path < rays_by_path_.size(); ++path) rays_by_path_[path].resize(keep[path]);
     rays_ = m.rays;
 }
 

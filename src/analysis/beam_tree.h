@@ -7,8 +7,9 @@
 /// surface" (Hanrahan 1986). Here: 4-adjacent pixels whose rays at the same ray-tree
 /// path start on the same object and hit the same object (or nothing) are merged; each
 /// connected group is one beam-tree node.
+#include <cstddef>
 #include <cstdint>
-#include <unordered_map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -25,7 +26,11 @@ struct BeamTreeStats {
 
 /// Collects (path, origin, hit) per pixel from trace events; `build()` labels beams.
 /// Memory: the rays it was given (12 bytes each) plus one image of scratch while it
-/// labels, never an image per ray-tree path.
+/// labels, never an image per ray-tree path. A render hears a million rays and more, so
+/// recording one is an append into blocks that are never copied as they grow, and a merge
+/// moves them. `raycache render balls:4 --accel bvh --stats` at 512x512 (1.4 million
+/// rays), one thread: 0.600 s with vectors that doubled and a copying merge, 0.470-0.475 s
+/// with blocks; the render alone takes 0.45 s.
 class BeamTreeBuilder final : public TraceSink {
 public:
     BeamTreeBuilder(int width, int height) : width_(width), height_(height) {}
@@ -33,9 +38,9 @@ public:
     /// Records one ray directly (for hand-made images in tests).
     void record(int path, int pixel, int originObject, bool inside, int hitObject);
     BeamTreeStats build() const;
-    /// Takes in the rays another builder of the same size recorded (other pixels);
-    /// `pathMap[i]` is this builder's path id for the other's path `i`.
-    void merge(const BeamTreeBuilder& other, const std::vector<int>& pathMap);
+    /// Takes over the rays another builder of the same size recorded (other pixels), which
+    /// is left empty; `pathMap[i]` is this builder's path id for the other's path `i`.
+    void merge(BeamTreeBuilder&& other, const std::vector<int>& pathMap);
     /// Beam label of every pixel at one path (-1: no ray there); labels count from 0.
     std::vector<int> labels(int path) const;
     std::vector<int> paths() const;
@@ -60,15 +65,42 @@ private:
         std::uint32_t hit;
         bool sameBeam(const Ray& o) const { return origin == o.origin && hit == o.hit; }
     };
+    /// Rays reserved at once and filled in place: no ray is ever moved to make room.
+    struct Block {
+        struct Free {
+            void operator()(Ray* p) const;
+        };
+        std::unique_ptr<Ray[], Free> rays;
+        std::size_t size = 0, capacity = 0;
+        explicit Block(std::size_t n);
+        const Ray* begin() const { return rays.get(); }
+        const Ray* end() const { return rays.get() + size; }
+    };
+    /// The rays of one path in recording order: a small first block (most paths hold few
+    /// rays), then blocks of one huge page each where the system has them (a 4 KB page
+    /// first touched costs a fault, 11 us on the virtual machine this was measured on).
+    struct PathLog {
+        std::vector<Block> blocks;
+        std::size_t size = 0;
+        void push_back(const Ray& r) {
+            if (blocks.empty() || blocks.back().size == blocks.back().capacity) grow();
+            Block& b = blocks.back();
+            b.rays[b.size++] = r;
+            ++size;
+        }
+        void grow();
+        void resize(std::size_t n);  ///< n <= size: forgets the rays after the first n
+        void append(PathLog&& other);
+    };
     /// The rays of one path sorted by pixel, the last recorded where a pixel has several.
-    static std::vector<Ray> byPixel(const std::vector<Ray>& rays);
+    static std::vector<Ray> byPixel(const PathLog& rays);
     /// Labels the beams of one path (`rays` from byPixel); `index` is an image of -1 on
     /// entry and on return. Returns how many beams there are.
     int labelBeams(const std::vector<Ray>& rays, std::vector<int>& index, std::vector<int>& label) const;
 
     int width_, height_;
     std::int64_t rays_ = 0;
-    std::unordered_map<int, std::vector<Ray>> rays_by_path_;  // path -> rays in recording order
+    std::vector<PathLog> rays_by_path_;  // by path id (a cache tree node)
 };
 
 }  // namespace rc

@@ -94,7 +94,7 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
                                      : canonical.child(map[node.parent], node.kind, node.light, node.sample);
         }
         out.completed = out.completed && s.done();
-        if (beams) beams->merge(*builders[k], map);
+        if (beams) beams->merge(std::move(*builders[k]), map);
     }
     // [parallel-merge]
     out.paths = canonical.size();
