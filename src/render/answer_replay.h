@@ -11,10 +11,13 @@
 namespace rc {
 
 /// The answers an uncached render of `o` (its search, its order) gets, in the order it asks.
-inline AnswerTable recordAnswers(const std::shared_ptr<const Scene>& scene, RenderOptions o) {
+/// `sink`, if given, hears that render's rays.
+inline AnswerTable recordAnswers(const std::shared_ptr<const Scene>& scene, RenderOptions o,
+                                 TraceSink* sink = nullptr) {
     AnswerTable table;
     o.cache = CacheKind::None;
     RenderSession session(scene, o, std::make_unique<RecordingSearch>(*scene, makeCompleteSearch(o.accel, *scene), table));
+    if (sink) session.addSink(sink);
     session.run();
     return table;
 }
