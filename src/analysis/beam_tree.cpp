@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <new>
-
-#include <sys/mman.h>
 #include <limits>
+#include <new>
 #include <stdexcept>
+
+#if __has_include(<sys/mman.h>)
+#include <sys/mman.h>
+#endif
 
 namespace rc {
 
@@ -22,7 +24,6 @@ constexpr std::size_t kFirstBlock = 4096;  // rays: 48 KB
 }
 
 BeamTreeBuilder::Block::Block(std::size_t n) : capacity(n) {
-    // [beam-log-block]
     // A block as large as a huge page is asked for as one: the kernel then clears and maps
     // it in one go, not in 512 faults
     std::size_t bytes = n * sizeof(Ray);
@@ -36,7 +37,6 @@ BeamTreeBuilder::Block::Block(std::size_t n) : capacity(n) {
     } else {
         p = std::malloc(bytes);
     }
-    // [beam-log-block]
     if (!p) throw std::bad_alloc();
     rays.reset(static_cast<Ray*>(p));
 }

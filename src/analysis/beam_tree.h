@@ -25,8 +25,9 @@ struct BeamTreeStats {
 };
 
 /// Collects (path, origin, hit) per pixel from trace events; `build()` labels beams.
-/// Memory: the rays it was given (12 bytes each) plus one image of scratch while it
-/// labels, never an image per ray-tree path. A render hears a million rays and more, so
+/// Memory: the rays it was given (12 bytes each), in blocks of which each path's last may
+/// be part-filled (at most one huge page, 2 MB, beyond its rays), plus one image of scratch
+/// while it labels; never an image per ray-tree path. A render hears a million rays and more, so
 /// recording one is an append into blocks that are never copied as they grow, and a merge
 /// moves them. `raycache render balls:4 --accel bvh --stats` at 512x512 (1.4 million
 /// rays), one thread: 0.600 s with vectors that doubled and a copying merge, 0.470-0.475 s
