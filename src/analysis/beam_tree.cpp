@@ -54,13 +54,17 @@ void BeamTreeBuilder::PathLog::resize(std::size_t n) {
         blocks[b].size = n - kept;
         blocks.erase(blocks.begin() + std::ptrdiff_t(n > kept ? b + 1 : b), blocks.end());
     }
-    size = n;
+}
+
+std::size_t BeamTreeBuilder::PathLog::size() const {
+    std::size_t n = 0;
+    for (const Block& b : blocks) n += b.size;
+    return n;
 }
 
 void BeamTreeBuilder::PathLog::append(PathLog&& other) {
     // Blocks move whole: a part-filled one stays part-filled, and the next ray opens a new one
     for (Block& b : other.blocks) blocks.push_back(std::move(b));
-    size += other.size;
     other = PathLog{};
 }
 
@@ -74,7 +78,7 @@ void BeamTreeBuilder::record(int path, int pixel, int originObject, bool inside,
 
 void BeamTreeBuilder::merge(BeamTreeBuilder&& other, const std::vector<int>& pathMap) {
     for (std::size_t path = 0; path < other.rays_by_path_.size(); ++path) {
-        if (other.rays_by_path_[path].size == 0) continue;
+        if (other.rays_by_path_[path].blocks.empty()) continue;
         const std::size_t to = std::size_t(pathMap.at(path));
         if (to >= rays_by_path_.size()) rays_by_path_.resize(to + 1);
         rays_by_path_[to].append(std::move(other.rays_by_path_[path]));
@@ -86,13 +90,13 @@ void BeamTreeBuilder::merge(BeamTreeBuilder&& other, const std::vector<int>& pat
 std::vector<int> BeamTreeBuilder::paths() const {
     std::vector<int> p;
     for (std::size_t path = 0; path < rays_by_path_.size(); ++path)
-        if (rays_by_path_[path].size > 0) p.push_back(int(path));
+        if (!rays_by_path_[path].blocks.empty()) p.push_back(int(path));
     return p;
 }
 
 std::vector<BeamTreeBuilder::Ray> BeamTreeBuilder::byPixel(const PathLog& rays) {
     std::vector<Ray> sorted;
-    sorted.reserve(rays.size);
+    sorted.reserve(rays.size());
     for (const Block& b : rays.blocks) sorted.insert(sorted.end(), b.begin(), b.end());
     std::stable_sort(sorted.begin(), sorted.end(), [](const Ray& a, const Ray& b) { return a.pixel < b.pixel; });
     // Keep the last of each pixel's rays (a pixel traced again replaces its key)
@@ -152,7 +156,7 @@ BeamTreeStats BeamTreeBuilder::build() const {
     std::vector<int> index(std::size_t(width_) * height_, -1);
     std::vector<int> label;
     for (const PathLog& rays : rays_by_path_)
-        if (rays.size > 0) s.nodes += labelBeams(byPixel(rays), index, label);
+        if (!rays.blocks.empty()) s.nodes += labelBeams(byPixel(rays), index, label);
     // [coherence]
     s.averageRayTreeSize = double(rays_) / (double(width_) * height_);
     s.coherence = s.nodes > 0 ? s.averageRayTreeSize / double(s.nodes) : 0.0;
@@ -164,14 +168,14 @@ BeamTreeBuilder::Mark BeamTreeBuilder::mark() const {
     Mark m;
     m.rays = rays_;
     for (std::size_t path = 0; path < rays_by_path_.size(); ++path)
-        if (rays_by_path_[path].size > 0) m.paths.emplace_back(int(path), rays_by_path_[path].size);
+        if (!rays_by_path_[path].blocks.empty()) m.paths.emplace_back(int(path), rays_by_path_[path].size());
     return m;
 }
 
 void BeamTreeBuilder::rollback(const Mark& m) {
     std::vector<std::size_t> keep(rays_by_path_.size(), 0);
     for (const auto& [path, size] : m.paths) {
-        if (path < 0 || std::size_t(path) >= rays_by_path_.size() || rays_by_path_[std::size_t(path)].size < size)
+        if (path < 0 || std::size_t(path) >= rays_by_path_.size() || rays_by_path_[std::size_t(path)].size() < size)
             throw std::invalid_argument("BeamTreeBuilder::rollback: a mark of another builder");
         keep[std::size_t(path)] = size;
     }

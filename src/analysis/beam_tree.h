@@ -82,15 +82,14 @@ private:
     /// first touched costs a fault, 11 us on the virtual machine this was measured on).
     struct PathLog {
         std::vector<Block> blocks;
-        std::size_t size = 0;
         void push_back(const Ray& r) {
             if (blocks.empty() || blocks.back().size == blocks.back().capacity) grow();
             Block& b = blocks.back();
             b.rays[b.size++] = r;
-            ++size;
         }
+        std::size_t size() const;
         void grow();
-        void resize(std::size_t n);  ///< n <= size: forgets the rays after the first n
+        void resize(std::size_t n);  ///< n <= size(): forgets the rays after the first n
         void append(PathLog&& other);
     };
     /// The rays of one path sorted by pixel, the last recorded where a pixel has several.
