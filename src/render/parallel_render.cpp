@@ -8,6 +8,60 @@
 
 namespace rc {
 
+namespace {
+constexpr int kBatch = 4096;  ///< rays a session traces between looks at progress and cancelling
+
+/// One session on the calling thread, which hears progress between batches of rays.
+void runHere(RenderSession& s, const std::function<bool(double)>& progress) {
+    for (;;) {
+        for (int n = 0; n < kBatch && s.step(); ++n) {
+        }
+        if (s.done() || (progress && !progress(s.progress()))) return;
+    }
+}
+
+/// Each session on a thread of its own, while the calling thread hears progress.
+void runOnThreads(std::vector<std::unique_ptr<RenderSession>>& sessions, const std::function<bool(double)>& progress) {
+    const int threads = int(sessions.size());
+    // A session belongs to its thread until the join; the calling thread sees only these
+    // atomics (each worker's fraction done) and, after the join, the sessions themselves
+    std::atomic<bool> cancel{false};
+    std::atomic<int> running{threads};
+    std::vector<std::atomic<double>> fraction(static_cast<std::size_t>(threads));
+    std::vector<std::exception_ptr> failure(static_cast<std::size_t>(threads));
+    std::vector<std::thread> pool;
+    for (int k = 0; k < threads; ++k) {
+        fraction[k].store(0.0);
+        pool.emplace_back([&, k] {
+            RenderSession& s = *sessions[k];
+            try {
+                while (!cancel.load(std::memory_order_relaxed)) {
+                    int n = 0;
+                    while (n < kBatch && s.step()) ++n;
+                    fraction[k].store(s.progress(), std::memory_order_relaxed);
+                    if (s.done()) break;
+                }
+            } catch (...) {  // e.g. std::bad_alloc: stop the others and rethrow on the caller
+                failure[k] = std::current_exception();
+                cancel = true;
+            }
+            running.fetch_sub(1, std::memory_order_release);
+        });
+    }
+    while (running.load(std::memory_order_acquire) > 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (progress && !cancel.load()) {
+            double done = 0.0;
+            for (const auto& f : fraction) done += f.load(std::memory_order_relaxed);
+            if (!progress(done / threads)) cancel = true;
+        }
+    }
+    for (std::thread& t : pool) t.join();
+    for (const std::exception_ptr& e : failure)
+        if (e) std::rethrow_exception(e);
+}
+}  // namespace
+
 ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptions& options, int threads,
                            BeamTreeBuilder* beams, const std::function<bool(double)>& progress) {
     // The full image size, resolved the way a session resolves it
@@ -33,53 +87,13 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
             sessions.back()->addSink(builders.back().get());
         }
     }
-    // A session belongs to its thread until the join; the calling thread sees only these
-    // atomics (each worker's fraction done) and, after the join, the sessions themselves
-    std::atomic<bool> cancel{false};
-    std::vector<std::atomic<double>> fraction(static_cast<std::size_t>(threads));
-    for (std::atomic<double>& f : fraction) f.store(0.0);
-    // Batches of rays until the session is done or the render cancelled
-    auto work = [&](int k) {
-        RenderSession& s = *sessions[k];
-        while (!cancel.load(std::memory_order_relaxed)) {
-            int n = 0;
-            while (n < 4096 && s.step()) ++n;
-            fraction[k].store(s.progress(), std::memory_order_relaxed);
-            if (s.done()) break;
-            if (threads == 1 && progress && !progress(s.progress())) cancel = true;
-        }
-    };
-    // One thread: the caller's, which hears progress between batches. A thread started for
-    // it cost a breadth-first render more than a scanline one (balls:4 at 512x512, one
-    // processor, median of 5, BVH alone / blocker+ bfs: 0.455 / 0.474 s on a started thread,
-    // 0.461 / 0.461 s on the caller's; with --stats 0.490 / 0.494 s and 0.477 / 0.482 s)
-    if (threads == 1) work(0);
-    std::atomic<int> running{threads == 1 ? 0 : threads};
-    std::vector<std::exception_ptr> failure(static_cast<std::size_t>(threads));
-    std::vector<std::thread> pool;
-    for (int k = 0; k < threads && threads > 1; ++k) {
-        pool.emplace_back([&, k] {
-            try {
-                work(k);
-            } catch (...) {  // e.g. std::bad_alloc: stop the others and rethrow on the caller
-                failure[k] = std::current_exception();
-                cancel = true;
-            }
-            running.fetch_sub(1, std::memory_order_release);
-        });
-    }
+    // One thread: the caller's. A thread started for it cost a breadth-first render more
+    // than a scanline one (balls:4 at 512x512, one processor, median of 5, BVH alone /
+    // blocker+ bfs: 0.455 / 0.474 s on a started thread, 0.461 / 0.461 s on the caller's;
+    // with --stats 0.490 / 0.494 s and 0.477 / 0.482 s)
+    if (threads == 1) runHere(*sessions[0], progress);
+    else runOnThreads(sessions, progress);
     // [parallel-split]
-    while (running.load(std::memory_order_acquire) > 0) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        if (progress && !cancel.load()) {
-            double done = 0.0;
-            for (const auto& f : fraction) done += f.load(std::memory_order_relaxed);
-            if (!progress(done / threads)) cancel = true;
-        }
-    }
-    for (std::thread& t : pool) t.join();
-    for (const std::exception_ptr& e : failure)
-        if (e) std::rethrow_exception(e);
 
     // [parallel-merge]
     // Integer sums: the merged image is the same for any number of threads
