@@ -127,7 +127,7 @@ std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
     // [bfs-walk]
 }
 
-std::vector<RayTask>& BreadthFirstOrder::pathRays(int node) {
+std::vector<RayTask>& BreadthFirstOrder::newPath(int node) {
     if (node >= int(paths_.size())) {
         paths_.resize(std::size_t(node) + 1);
         pixels_.resize(std::size_t(node) + 1);

@@ -45,8 +45,16 @@ private:
     enum State : std::uint8_t { Absent, Unvisited, Queued, Deferred, Done };
     bool beginPath();
     void enqueueNeighbours(int local);
-    /// The rays of path `node` (a cache tree node), made room for a band of them
-    std::vector<RayTask>& pathRays(int node);
+    /// The rays of path `node` (a cache tree node), made room for a band of them. Called for
+    /// every ray spawned: the common case, a path already met, is a few instructions here,
+    /// and making room is out of line (one call of the two costed 34 instructions, callgrind)
+    std::vector<RayTask>& pathRays(int node) {
+        if (std::size_t(node) < paths_.size() && paths_[std::size_t(node)].capacity() != 0)
+            return paths_[std::size_t(node)];
+        return newPath(node);
+    }
+    /// pathRays() for a path met for the first time (or since its memory was given back)
+    [[gnu::noinline]] std::vector<RayTask>& newPath(int node);
     /// The next untouched pixel of the grid from the scan on, or -1: the seed of a new region
     int nextUnvisited();
     std::optional<Pick> walk(const std::vector<RayTask>& tasks);
