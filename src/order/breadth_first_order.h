@@ -46,14 +46,15 @@ private:
     bool beginPath();
     void enqueueNeighbours(int local);
     /// The rays of path `node` (a cache tree node), made room for a band of them. Called for
-    /// every ray spawned: the common case, a path already met, is a few instructions here,
-    /// and making room is out of line (one call of the two costed 34 instructions, callgrind)
+    /// every ray spawned, so the common case (the path has room) is inline and making room
+    /// is not: as one function, a call took 34 instructions (callgrind, balls:4 at 512x512)
     std::vector<RayTask>& pathRays(int node) {
         if (std::size_t(node) < paths_.size() && paths_[std::size_t(node)].capacity() != 0)
             return paths_[std::size_t(node)];
         return newPath(node);
     }
-    /// pathRays() for a path met for the first time (or since its memory was given back)
+    /// pathRays() for a path with no room yet: met for the first time, or restored from a
+    /// checkpoint
     [[gnu::noinline]] std::vector<RayTask>& newPath(int node);
     /// The next untouched pixel of the grid from the scan on, or -1: the seed of a new region
     int nextUnvisited();
