@@ -166,8 +166,8 @@ TEST_CASE("a pixel recorded twice at one path keeps its last key", "[beam]") {
 }
 
 TEST_CASE("a path's rays span several blocks: rolled back and merged, none lost", "[beam]") {
-    // 200x100 pixels, more rays than a first block holds (4096): stripes of 10 columns hit
-    // objects 1 and 2 in turn, 20 beams
+    // 200x100 pixels, more rays than the small blocks hold (16, 32, ..., 4096: 8176), so a
+    // huge one too: stripes of 10 columns hit objects 1 and 2 in turn, 20 beams
     const int w = 200, h = 100;
     auto stripe = [](int p) { return (p % w) / 10 % 2 + 1; };
     BeamTreeBuilder b(w, h);
@@ -196,4 +196,17 @@ TEST_CASE("a path's rays span several blocks: rolled back and merged, none lost"
     REQUIRE(b.storedRays() == w * h);
     REQUIRE(b.build().nodes == 20);
     REQUIRE(b.labels(0)[w * h - 1] == b.labels(0)[w - 1]);
+}
+
+TEST_CASE("paths of few rays take little memory; a long one grows by doubling", "[beam]") {
+    // Distributed ray tracing makes hundreds of thousands of paths, most with a few rays
+    BeamTreeBuilder b(100, 100);
+    for (int path = 0; path < 10000; ++path) b.record(path, path % 10000, -1, false, 1);
+    REQUIRE(b.storedRays() == 10000);
+    REQUIRE(b.reservedRays() <= 16 * 10000);
+    // A path of 5000 rays: blocks of 16, 32, ..., 4096 (8176 rays), no more than twice its rays
+    BeamTreeBuilder one(100, 100);
+    for (int p = 0; p < 5000; ++p) one.record(0, p, -1, false, 1);
+    REQUIRE(one.reservedRays() == 8176);
+    REQUIRE(one.build().nodes == 1);
 }

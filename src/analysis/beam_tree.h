@@ -47,6 +47,9 @@ public:
     std::vector<int> paths() const;
     /// Rays held (for checking that memory follows the rays, not paths x pixels).
     std::int64_t storedRays() const { return rays_; }
+    /// Rays the blocks have room for, filled or not (for checking that a path of few rays
+    /// takes little memory).
+    std::int64_t reservedRays() const;
 
     /// How many rays each path held at some moment: the rays are a log that only grows,
     /// so a checkpoint of a stepping render keeps its length.
@@ -77,9 +80,10 @@ private:
         const Ray* begin() const { return rays.get(); }
         const Ray* end() const { return rays.get() + size; }
     };
-    /// The rays of one path in recording order: a small first block (most paths hold few
-    /// rays), then blocks of one huge page each where the system has them (a 4 KB page
-    /// first touched costs a fault, 11 us on the virtual machine this was measured on).
+    /// The rays of one path in recording order: small blocks, each twice the last (most
+    /// paths hold few rays), then blocks of one huge page each where the system has them
+    /// (a 4 KB page first touched costs a fault, 11 us on the virtual machine this was
+    /// measured on).
     struct PathLog {
         std::vector<Block> blocks;
         void push_back(const Ray& r) {
