@@ -50,24 +50,38 @@ void BeamTreeBuilder::PathLog::grow() {
     // 64x64, 64 samples a pixel, soft shadows and gloss, 371,008 paths): with a first block
     // of 48 KB each, `render --stats` took 1.8 GB and 12-16 s; with these, 370 MB and 7 s
     // (3.9 s without --stats)
+    seal();
     const std::size_t last = blocks.empty() ? 0 : blocks.back().capacity;
     blocks.emplace_back(last == 0                    ? kFirstBlock
                         : last < kLargestSmallBlock ? 2 * last
                                                     : kHugePage / sizeof(Ray));
+    open();
+}
+
+void BeamTreeBuilder::PathLog::open() {
+    if (blocks.empty()) {
+        next = end = nullptr;
+        return;
+    }
+    Block& b = blocks.back();
+    next = b.rays.get() + b.size;
+    end = b.rays.get() + b.capacity;
 }
 
 void BeamTreeBuilder::PathLog::resize(std::size_t n) {
+    seal();
     std::size_t kept = 0, b = 0;
     for (; b < blocks.size() && kept + blocks[b].size <= n; ++b) kept += blocks[b].size;
     if (b < blocks.size()) {
         blocks[b].size = n - kept;
         blocks.erase(blocks.begin() + std::ptrdiff_t(n > kept ? b + 1 : b), blocks.end());
     }
+    open();
 }
 
 std::size_t BeamTreeBuilder::PathLog::size() const {
     std::size_t n = 0;
-    for (const Block& b : blocks) n += b.size;
+    for (std::size_t b = 0; b < blocks.size(); ++b) n += filled(b);
     return n;
 }
 
@@ -79,9 +93,13 @@ std::int64_t BeamTreeBuilder::reservedRays() const {
 }
 
 void BeamTreeBuilder::PathLog::append(PathLog&& other) {
-    // Blocks move whole: a part-filled one stays part-filled, and the next ray opens a new one
+    // Blocks move whole (their rays stay where they are); the next ray goes into the room
+    // left in the last one, after the other's rays
+    seal();
+    other.seal();
     for (Block& b : other.blocks) blocks.push_back(std::move(b));
     other = PathLog{};
+    open();
 }
 
 void BeamTreeBuilder::record(int path, int pixel, int originObject, bool inside, int hitObject) {
@@ -113,7 +131,8 @@ std::vector<int> BeamTreeBuilder::paths() const {
 std::vector<BeamTreeBuilder::Ray> BeamTreeBuilder::byPixel(const PathLog& rays) {
     std::vector<Ray> sorted;
     sorted.reserve(rays.size());
-    for (const Block& b : rays.blocks) sorted.insert(sorted.end(), b.begin(), b.end());
+    for (std::size_t b = 0; b < rays.blocks.size(); ++b)
+        sorted.insert(sorted.end(), rays.blocks[b].begin(), rays.blocks[b].begin() + rays.filled(b));
     std::stable_sort(sorted.begin(), sorted.end(), [](const Ray& a, const Ray& b) { return a.pixel < b.pixel; });
     // Keep the last of each pixel's rays (a pixel traced again replaces its key)
     std::size_t n = 0;

@@ -75,10 +75,9 @@ private:
             void operator()(Ray* p) const;
         };
         std::unique_ptr<Ray[], Free> rays;
-        std::size_t size = 0, capacity = 0;
+        std::size_t size = 0, capacity = 0;  ///< size: of a sealed block (PathLog::filled())
         explicit Block(std::size_t n);
         const Ray* begin() const { return rays.get(); }
-        const Ray* end() const { return rays.get() + size; }
     };
     /// The rays of one path in recording order: small blocks, each twice the last (most
     /// paths hold few rays), then blocks of one huge page each where the system has them
@@ -86,15 +85,39 @@ private:
     /// measured on).
     struct PathLog {
         std::vector<Block> blocks;
+        /// Where the next ray goes in the last block, and the end of its room (null: no
+        /// block). The last block's count is `next` (its `size` is set when it is sealed):
+        /// an append reads and writes this log only, not the block's header, which for
+        /// hundreds of thousands of paths is one more cache miss a ray
+        Ray* next = nullptr;
+        Ray* end = nullptr;
+        PathLog() = default;
+        PathLog(PathLog&& o) noexcept
+            : blocks(std::move(o.blocks)), next(std::exchange(o.next, nullptr)), end(std::exchange(o.end, nullptr)) {}
+        PathLog& operator=(PathLog&& o) noexcept {
+            blocks = std::move(o.blocks);
+            next = std::exchange(o.next, nullptr);
+            end = std::exchange(o.end, nullptr);
+            return *this;
+        }
         void push_back(const Ray& r) {
-            if (blocks.empty() || blocks.back().size == blocks.back().capacity) grow();
-            Block& b = blocks.back();
-            b.rays[b.size++] = r;
+            if (next == end) grow();
+            *next++ = r;
+        }
+        /// Rays in block `i`.
+        std::size_t filled(std::size_t i) const {
+            return i + 1 == blocks.size() ? std::size_t(next - blocks[i].begin()) : blocks[i].size;
         }
         std::size_t size() const;
         void grow();
         void resize(std::size_t n);  ///< n <= size(): forgets the rays after the first n
         void append(PathLog&& other);
+        /// Sets the last block's size from `next` (before blocks are cut or moved).
+        void seal() {
+            if (!blocks.empty()) blocks.back().size = filled(blocks.size() - 1);
+        }
+        /// Points `next` and `end` into the last block, after its sealed size.
+        void open();
     };
     /// The rays of one path sorted by pixel, the last recorded where a pixel has several.
     static std::vector<Ray> byPixel(const PathLog& rays);
