@@ -210,3 +210,24 @@ TEST_CASE("paths of few rays take little memory; a long one grows by doubling", 
     REQUIRE(one.reservedRays() == 8176);
     REQUIRE(one.build().nodes == 1);
 }
+
+TEST_CASE("recording goes on after a merge and a rollback, in order", "[beam]") {
+    // Pixels 0-29 of path 0 recorded by two builders; a pixel recorded again keeps its last ray
+    BeamTreeBuilder a(10, 10), b(10, 10);
+    for (int p = 0; p < 10; ++p) a.record(0, p, -1, false, 1);
+    for (int p = 10; p < 20; ++p) b.record(0, p, -1, false, 1);
+    a.merge(std::move(b), {0});
+    for (int p = 20; p < 30; ++p) a.record(0, p, -1, false, 1);
+    REQUIRE(a.storedRays() == 30);
+    REQUIRE(a.build().nodes == 1);
+    const BeamTreeBuilder::Mark m = a.mark();
+    a.record(0, 5, -1, false, 2);  // pixel 5 again, another object: a beam of its own
+    REQUIRE(a.build().nodes == 2);
+    a.rollback(m);
+    REQUIRE(a.storedRays() == 30);
+    REQUIRE(a.build().nodes == 1);
+    a.record(0, 30, -1, false, 1);
+    const std::vector<int> labels = a.labels(0);
+    for (int p = 0; p <= 30; ++p) REQUIRE(labels[std::size_t(p)] == 0);
+    REQUIRE(labels[31] == -1);
+}
