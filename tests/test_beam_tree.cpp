@@ -94,7 +94,7 @@ public:
         auto [it, fresh] = keys_.try_emplace(e.task.node);
         if (fresh) it->second.assign(std::size_t(width_) * height_, kAbsent);
         const auto& o = e.task.query.origin;
-        it->second[e.task.pixel] = {o.object, o.inside, e.lookup.answer.object};
+        it->second[e.task.pixel] = {o.object, o.inside, e.lookup.answer().object};
     }
     std::int64_t nodes() const {
         std::int64_t n = 0;

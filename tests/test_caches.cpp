@@ -73,8 +73,8 @@ TEST_CASE("every strategy returns what the complete search returns, ray by ray",
                     const Answer truth = linear.nearest(q, scratch);
                     INFO(scene.name << " " << toString(kind) << " kind " << toString(q.kind));
                     REQUIRE(l.known);
-                    REQUIRE(l.answer.object == truth.object);
-                    REQUIRE(l.answer.t == truth.t);
+                    REQUIRE(l.answer().object == truth.object);
+                    REQUIRE(l.answer().t == truth.t);
                     hits += l.decision == Decision::Hit;
                 }
                 INFO(scene.name << " " << toString(kind));
@@ -103,7 +103,7 @@ TEST_CASE("cheap lookups never search and never reload the entry", "[cache]") {
         const Lookup again = strategy->lookup(q, e, LookupMode::CheapOnly, n);
         REQUIRE(again.known);
         REQUIRE(again.decision == Decision::Hit);
-        REQUIRE(again.answer == full.answer);
+        REQUIRE(again.answer() == full.answer());
     }
 }
 
@@ -164,13 +164,13 @@ TEST_CASE("CheapOnly never searches, in front of every search and with every cac
                     REQUIRE_FALSE(cheap.searched);
                     if (cheap.known) {
                         ++known;
-                        REQUIRE(cheap.answer == truth);
+                        REQUIRE(cheap.answer() == truth);
                         continue;
                     }
                     ++deferred;
                     const Lookup full = strategy->lookup(q, e, LookupMode::Full, n);
                     REQUIRE(full.known);
-                    REQUIRE(full.answer == truth);
+                    REQUIRE(full.answer() == truth);
                     // The strategy's own count of complete searches is the true one
                     fullSearches += search.searches - before;
                     REQUIRE(n.completeSearches - counted == search.searches - before);
@@ -359,7 +359,7 @@ TEST_CASE("a cylinder of safety is measured only once a ray may fit in it", "[ca
         CacheEntry e;
         Counters n;
         const Lookup first = strategy->lookup(q, e, LookupMode::Full, n);
-        if (first.answer.object >= 0) continue;
+        if (first.answer().object >= 0) continue;
         const SafetyCylinder kept = e.cylinder;
         const double radius = linear.clearance(kept.a, kept.b, -1, q.origin.object, kNoHit) - slack;
         if (!(radius > 0.0)) continue;

@@ -31,7 +31,7 @@ struct Listener final : TraceSink {
     void onEvent(const TraceEvent& e) override {
         const Query& q = e.task.query;
         heard.push_back({e.step, e.task.pixel, e.task.node, e.task.depth, e.task.sample, e.task.key, int(q.kind),
-                         q.light, e.lookup.answer.object, e.lookup.answer.t, q.ray.o.x, q.ray.o.y, q.ray.o.z,
+                         q.light, e.lookup.answer().object, e.lookup.answer().t, q.ray.o.x, q.ray.o.y, q.ray.o.z,
                          q.ray.d.x, q.ray.d.y, q.ray.d.z, int(e.lookup.decision), int(e.lookup.reason), e.tests,
                          e.lookup.searched, e.deferred});
     }

@@ -86,13 +86,13 @@ TEST_CASE("a ray heading into the sphere it leaves and missing it does not make 
     Counters n;
     Query tangent{{Vec3(0, 1, 0), Vec3(1, 0, 0)}, kNoHit, {0, true}, RayKind::Reflection, -1};
     const Lookup first = cache.lookup(tangent, e, LookupMode::Full, n);
-    CHECK(first.answer == search.nearest(tangent, n));
-    CHECK(first.answer.object == -1);
+    CHECK(first.answer() == search.nearest(tangent, n));
+    CHECK(first.answer().object == -1);
     Query inward{{Vec3(0, 1, 0), Vec3(0, -1, 0)}, kNoHit, {0, true}, RayKind::Reflection, -1};
     const Lookup second = cache.lookup(inward, e, LookupMode::Full, n);
-    CHECK(second.answer == search.nearest(inward, n));
-    CHECK(second.answer.object == 0);
-    CHECK(second.answer.t == Approx(2.0));
+    CHECK(second.answer() == search.nearest(inward, n));
+    CHECK(second.answer().object == 0);
+    CHECK(second.answer().t == Approx(2.0));
 }
 
 TEST_CASE("intersection table: textbook fails where the stable formula holds", "[stability][intersection]") {

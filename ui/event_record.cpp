@@ -29,7 +29,7 @@ EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous)
     r.step = std::int32_t(e.step);
     r.pixel = e.task.pixel;
     r.node = e.task.node;
-    r.hit = e.lookup.known ? e.lookup.answer.object : -1;
+    r.hit = e.lookup.known ? e.lookup.answer().object : -1;
     r.origin = q.origin.object;
     r.tests = e.tests;
     r.region = region;
@@ -50,7 +50,7 @@ EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous)
     }
     r.d[0] = quantise(x);
     r.d[1] = quantise(y);
-    r.t = e.lookup.known && std::isfinite(e.lookup.answer.t) ? float(e.lookup.answer.t) : -1.0f;
+    r.t = e.lookup.known && std::isfinite(e.lookup.answer().t) ? float(e.lookup.answer().t) : -1.0f;
     return r;
 }
 

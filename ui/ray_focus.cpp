@@ -30,9 +30,9 @@ std::optional<RayFocus> RayFocus::ofCurrent(const SessionState& s) {
     f.kind = q.kind;
     f.light = q.light;
     f.origin = q.origin;
-    f.hit = e->lookup.known ? e->lookup.answer.object : -1;
+    f.hit = e->lookup.known ? e->lookup.answer().object : -1;
     f.ray = q.ray;
-    f.t = f.hit >= 0 ? e->lookup.answer.t : -1.0;
+    f.t = f.hit >= 0 ? e->lookup.answer().t : -1.0;
     f.tmax = q.tmax < rc::kNoHit ? q.tmax : -1.0;
     f.current = true;
     f.deferred = e->deferred;

@@ -15,7 +15,7 @@ namespace rc {
 void BeamTreeBuilder::onEvent(const TraceEvent& e) {
     if (e.deferred) return;
     record(e.task.node, e.task.pixel, e.task.query.origin.object, e.task.query.origin.inside,
-           e.lookup.answer.object);
+           e.lookup.answer().object);
 }
 
 namespace {

@@ -104,7 +104,7 @@ bool RenderSession::step() {
             continue;
         }
         ++counters_.rays[int(task.query.kind)];
-        if (task.query.kind == RayKind::Primary && lookup.answer.object >= 0) ++counters_.primaryHits;
+        if (task.query.kind == RayKind::Primary && lookup.answer().object >= 0) ++counters_.primaryHits;
         if (lookup.decision == Decision::Hit) ++counters_.hits;
         if (lookup.decision == Decision::Miss) {
             ++counters_.misses;
@@ -114,11 +114,11 @@ bool RenderSession::step() {
         }
         if (options_.verify && (lookup.decision != Decision::Uncached || options_.accel != AccelKind::Linear)) {
             Counters scratch;
-            if (!(verifier_.nearest(task.query, scratch) == lookup.answer)) ++counters_.verifyDisagreements;
+            if (!(verifier_.nearest(task.query, scratch) == lookup.answer())) ++counters_.verifyDisagreements;
         }
         // Shade: add to the pixel, spawn the children; the cache tree gives each its path
         children_.clear();
-        shade(*scene_, task, lookup.answer, options_.shading, image_, children_);
+        shade(*scene_, task, lookup.answer(), options_.shading, image_, children_);
         for (RayTask& c : children_) c.node = paths_.child(task.node, c.query.kind, c.query.light, c.sample);
         // [session-step]
         tell(false);

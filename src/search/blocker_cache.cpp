@@ -97,7 +97,7 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
     // Shadow rays: the hull of origin and light holds every possible blocker
     if (q.kind == RayKind::Shadow) {
         Lookup r = shadow(q, e, why, mode, n);
-        if (mode == LookupMode::Full && r.decision == Decision::Miss) reload(q, r.answer, e, n);
+        if (mode == LookupMode::Full && r.decision == Decision::Miss) reload(q, r.answer(), e, n);
         return r;
     }
     if (why != MissReason::None && plus_ && recall(q, e)) why = MissReason::None;
@@ -105,7 +105,7 @@ Lookup BlockerCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Coun
     if (why == MissReason::None) {
         r = probe(q, e, mode, n);
         if (r.known) {
-            if (mode == LookupMode::Full && r.decision == Decision::Miss) reload(q, r.answer, e, n);
+            if (mode == LookupMode::Full && r.decision == Decision::Miss) reload(q, r.answer(), e, n);
             return r;
         }
         if (r.decision == Decision::Uncached) return r;  // stepped aside, deferred
@@ -211,16 +211,12 @@ void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer&
 }
 
 Lookup BlockerCache::searchPast(const Query& q, CacheEntry* e, LookupMode mode, Counters& n) {
-    // One result, built where it is returned: a copy of it waited on the stores of its
-    // fields (on balls:4, perf put half of the samples of a lookup stepping aside there)
-    Lookup r{false, {}, Decision::Uncached, MissReason::None, false};
     // CheapOnly never searches: the ray waits for its turn
-    if (mode == LookupMode::CheapOnly) return r;
+    if (mode == LookupMode::CheapOnly) return {false, {}, Decision::Uncached};
     ++n.completeSearches;
-    r.known = r.searched = true;
-    r.answer = search_.nearest(q, n);
-    if (e) reload(q, r.answer, *e, n);
-    return r;
+    const Answer a = search_.nearest(q, n);
+    if (e) reload(q, a, *e, n);
+    return {true, a, Decision::Uncached, MissReason::None, true};
 }
 
 void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counters&) {

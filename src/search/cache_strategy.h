@@ -37,13 +37,31 @@ enum class LookupMode {
 };
 
 /// The outcome of one lookup.
+///
+/// Its fields are laid out flat in sixteen bytes, so that a lookup is returned in two
+/// registers. Returned in memory (an Answer and four flags take 32 bytes), its caller read it
+/// back in wide loads from the callee's narrow stores still in flight, which stalls: on cube:8
+/// (linear, blocker+, bfs), half of BlockerCache::lookup's samples sat on that copy.
 struct Lookup {
+    Lookup() = default;
+    Lookup(bool known, const Answer& a, Decision d = Decision::Uncached, MissReason why = MissReason::None,
+           bool searched = false)
+        : t(a.t), object(a.object), known(known), decision(d), reason(why), searched(searched) {}
+    /// The object hit first (or -1), and where.
+    Answer answer() const { return {object, t}; }
+    void setAnswer(const Answer& a) {
+        object = a.object;
+        t = a.t;
+    }
+
+    double t = kNoHit;  ///< the answer's distance
+    int object = -1;    ///< the answer's object
     bool known = false;  ///< false: CheapOnly gave up (the ray is deferred)
-    Answer answer;
     Decision decision = Decision::Uncached;
     MissReason reason = MissReason::None;
     bool searched = false;  ///< a complete search was made
 };
+static_assert(sizeof(Lookup) == 16, "a lookup fits in two registers");
 
 /// What a cache strategy knows beyond the cache tree's entries, as it was at a checkpoint
 /// of a stepping render (see CacheStrategy::checkpoint).

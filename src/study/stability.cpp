@@ -28,9 +28,9 @@ public:
             if (hasNaN(v)) nan[t.pixel] = 1;
             else if (!finite(v)) inf[t.pixel] = 1;
         }
-        const double hit = e.lookup.answer.t;
+        const double hit = e.lookup.answer().t;
         if (std::isnan(hit)) nan[t.pixel] = 1;
-        if (e.lookup.answer.object >= 0 && !std::isfinite(hit)) inf[t.pixel] = 1;
+        if (e.lookup.answer().object >= 0 && !std::isfinite(hit)) inf[t.pixel] = 1;
     }
     std::vector<std::uint8_t> nan, inf;
 };
@@ -42,7 +42,7 @@ public:
     void onEvent(const TraceEvent& e) override {
         if (e.deferred) return;
         const Query& q = e.task.query;
-        const Answer& a = e.lookup.answer;
+        const Answer& a = e.lookup.answer();
         if (a.object < 0) return;
         if (q.kind == RayKind::Shadow) {
             const double scale = std::max({std::abs(q.ray.o.x), std::abs(q.ray.o.y), std::abs(q.ray.o.z)});

@@ -202,7 +202,7 @@ TEST_CASE("A ray that hit nothing has no hull, blockers or target outlined", "[g
     for (int i = 0; i < 100000 && miss < 0; ++i) {
         REQUIRE(f.state().step());
         const auto& e = f.state().recorder().lastEvent();
-        if (!e->deferred && e->task.node == 0 && e->lookup.known && e->lookup.answer.object < 0)
+        if (!e->deferred && e->task.node == 0 && e->lookup.known && e->lookup.answer().object < 0)
             miss = int(f.state().recorder().events().size()) - 1;
     }
     REQUIRE(miss >= 0);

@@ -228,10 +228,10 @@ TEST_CASE("The blocker hull overlay outlines the target green and the blockers o
     for (int i = 0; i < 200000 && !blockers; ++i) {
         REQUIRE(f.state().step());
         const auto& e = f.state().recorder().lastEvent();
-        if (e->deferred || e->task.query.kind != rc::RayKind::Primary || e->lookup.answer.object < 0) continue;
+        if (e->deferred || e->task.query.kind != rc::RayKind::Primary || e->lookup.answer().object < 0) continue;
         // The pair of sites of this eye ray: the eye and the object it hit (no tiles in blocker)
         const rc::Query& q = e->task.query;
-        const int site = lists->pointSite(e->lookup.answer.object, q.ray.at(e->lookup.answer.t));
+        const int site = lists->pointSite(e->lookup.answer().object, q.ray.at(e->lookup.answer().t));
         const std::vector<int>* l = lists->find(lists->originSite(q), site);
         if (l && !l->empty()) {
             blockers = l;

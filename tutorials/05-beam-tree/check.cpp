@@ -44,7 +44,7 @@ public:
         auto [it, fresh] = byPath_.try_emplace(e.task.node);
         if (fresh) it->second.resize(pixels_);
         const rc::RayOrigin& o = e.task.query.origin;
-        it->second[e.task.pixel] = {true, o.object, o.inside, e.lookup.answer.object};
+        it->second[e.task.pixel] = {true, o.object, o.inside, e.lookup.answer().object};
     }
     std::vector<tutorial::PathImage> paths() const {
         std::vector<tutorial::PathImage> out;
