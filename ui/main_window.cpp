@@ -509,6 +509,10 @@ void MainWindow::buildDocks() {
     stats_ = new StatsPanel(this);
     eventLog_ = new EventLogPanel(this);
     objects_ = new ObjectsPanel(this);
+    // The right-hand panels run the window's full height and the event log sits under the
+    // image only: stacked under both, they made the window taller than a 1280x720
+    // projector with large fonts (818 pixels)
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     QDockWidget* rt = dock("Ray tree", rayTree_, Qt::RightDockWidgetArea);
     QDockWidget* ct = dock("Cache tree", cacheTree_, Qt::RightDockWidgetArea);
     dock("Statistics", stats_, Qt::RightDockWidgetArea);

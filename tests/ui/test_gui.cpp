@@ -484,6 +484,25 @@ TEST_CASE("Screenshot mode writes a PNG of the window", "[gui][screenshot]") {
     REQUIRE(colours.size() > 100);
 }
 
+TEST_CASE("With large fonts the window fits a 1280x720 projector", "[gui][screenshot]") {
+    // Before the right-hand panels ran the window's full height, the window could not be
+    // made shorter than 818 pixels with large fonts
+    QTemporaryDir dir;
+    GuiOptions o;
+    o.scene = "cube:3";
+    o.width = o.height = 96;
+    o.steps = 2000;
+    o.largeFonts = true;
+    o.screenshot = dir.filePath("projector.png");
+    o.window = QSize(1280, 720);
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    REQUIRE(renderScreenshot(o, out, err) == 0);
+    const QImage img(o.screenshot);
+    REQUIRE(img.width() == 1280);
+    REQUIRE(img.height() == 720);
+}
+
 TEST_CASE("The executable exits 2 on a bad scene and 0 on a screenshot", "[gui][screenshot]") {
     QTemporaryDir dir;
     const QString bad = dir.filePath("broken.nff");
