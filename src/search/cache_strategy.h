@@ -49,10 +49,6 @@ struct Lookup {
         : t(a.t), object(a.object), known(known), decision(d), reason(why), searched(searched) {}
     /// The object hit first (or -1), and where.
     Answer answer() const { return {object, t}; }
-    void setAnswer(const Answer& a) {
-        object = a.object;
-        t = a.t;
-    }
 
     double t = kNoHit;  ///< the answer's distance
     int object = -1;    ///< the answer's object
