@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Layers run one way: geometry -> scene -> search -> trace -> order -> analysis -> render
+"""Layers run one way: geometry -> scene -> search -> trace -> order -> analysis -> render -> view
 -> study -> cli. A file of src/ may include its own layer and the layers before it, never one after
 it; src/ never includes Qt or ui/. Prints every include that runs upward and exits 1 if
 there is one. Run by ctest ("layers run one way"); usage: check_layers.py SOURCE_DIR"""
@@ -7,7 +7,7 @@ import pathlib
 import re
 import sys
 
-ORDER = ["geometry", "scene", "search", "trace", "order", "analysis", "render", "study", "cli"]
+ORDER = ["geometry", "scene", "search", "trace", "order", "analysis", "render", "view", "study", "cli"]
 RANK = {layer: i for i, layer in enumerate(ORDER)}
 # analysis/ holds the paper's measures (the beam tree), below render/; the studies that
 # render images (stability, stiff scenes, precise intersection, image error) are study/,

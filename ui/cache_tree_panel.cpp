@@ -15,7 +15,7 @@ CacheTreePanel::CacheTreePanel(QWidget* parent) : QTreeWidget(parent) {
     header()->setSectionResizeMode(QHeaderView::ResizeToContents);
 }
 
-void CacheTreePanel::refresh(const SessionState* state) {
+void CacheTreePanel::refresh(const rc::SessionState* state) {
     if (!state) return;
     const rc::CacheTree& tree = state->session().cacheTree();
     const rc::BlockerLists* lists = state->session().strategy().blockerLists();

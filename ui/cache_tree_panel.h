@@ -3,7 +3,7 @@
 /// \brief Dock panel: the cache tree, one entry per ray-tree path.
 #include <QTreeWidget>
 
-#include "session_state.h"
+#include "view/session_state.h"
 
 namespace rcgui {
 
@@ -14,7 +14,7 @@ class CacheTreePanel : public QTreeWidget {
 public:
     explicit CacheTreePanel(QWidget* parent = nullptr);
     /// Rebuilds from `state` (null: a worker is running; the panel is left as is).
-    void refresh(const SessionState* state);
+    void refresh(const rc::SessionState* state);
 };
 
 }  // namespace rcgui

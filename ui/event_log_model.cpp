@@ -7,7 +7,7 @@
 
 namespace rcgui {
 
-void EventLogModel::setState(const SessionState* state) {
+void EventLogModel::setState(const rc::SessionState* state) {
     const int rows = !state ? 0 : int(missesOnly_ ? state->recorder().misses().size() : state->recorder().events().size());
     if (state == state_ && rows >= rows_) {
         // The log only grows: announce the new rows
@@ -26,7 +26,7 @@ void EventLogModel::setState(const SessionState* state) {
 
 void EventLogModel::setMissesOnly(bool on) {
     if (on == missesOnly_) return;
-    const SessionState* s = state_;
+    const rc::SessionState* s = state_;
     missesOnly_ = on;
     state_ = nullptr;
     setState(s);
@@ -49,7 +49,7 @@ QVariant EventLogModel::headerData(int section, Qt::Orientation o, int role) con
 QVariant EventLogModel::data(const QModelIndex& index, int role) const {
     const int i = eventAt(index.row());
     if (i < 0) return {};
-    const EventRecord& r = state_->recorder().events()[i];
+    const rc::EventRecord& r = state_->recorder().events()[i];
     if (role == Qt::ForegroundRole && index.column() == 5) {
         if (r.deferred() || r.rayDecision() == rc::Decision::Miss) return palette::missReason(r.missReason()).darker(130);
         return {};

@@ -3,7 +3,7 @@
 /// \brief A table model over the recorded trace events, optionally only the misses.
 #include <QAbstractTableModel>
 
-#include "session_state.h"
+#include "view/session_state.h"
 
 namespace rcgui {
 
@@ -14,7 +14,7 @@ class EventLogModel : public QAbstractTableModel {
 public:
     using QAbstractTableModel::QAbstractTableModel;
     /// Follows `state` (null: shows nothing, e.g. while a worker owns the state).
-    void setState(const SessionState* state);
+    void setState(const rc::SessionState* state);
     void setMissesOnly(bool on);
     bool missesOnly() const { return missesOnly_; }
     /// The recorder index of a row's event.
@@ -26,7 +26,7 @@ public:
     QVariant headerData(int section, Qt::Orientation o, int role) const override;
 
 private:
-    const SessionState* state_ = nullptr;
+    const rc::SessionState* state_ = nullptr;
     bool missesOnly_ = false;
     int rows_ = 0;
 };

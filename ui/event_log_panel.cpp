@@ -45,7 +45,7 @@ void EventLogPanel::setMissesOnly(bool on) {
     model_->setMissesOnly(on);
 }
 
-void EventLogPanel::refresh(const SessionState* state) {
+void EventLogPanel::refresh(const rc::SessionState* state) {
     model_->setState(state);
     if (follow_->isChecked() && model_->rowCount() > 0) table_->scrollToBottom();
 }

@@ -9,7 +9,9 @@ class QTableView;
 namespace rcgui {
 
 class EventLogModel;
-class SessionState;
+}
+namespace rc { class SessionState; }
+namespace rcgui {
 
 /// A table of trace events with a "misses only" filter; activating a row selects its
 /// pixel and ray.
@@ -17,7 +19,7 @@ class EventLogPanel : public QWidget {
     Q_OBJECT
 public:
     explicit EventLogPanel(QWidget* parent = nullptr);
-    void refresh(const SessionState* state);
+    void refresh(const rc::SessionState* state);
     EventLogModel* model() const { return model_; }
     void setMissesOnly(bool on);
 

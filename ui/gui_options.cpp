@@ -28,6 +28,12 @@ QStringList cacheNames() {
     for (rc::CacheKind k : rc::allCacheKinds()) out << text(rc::toString(k));
     return out;
 }
+/// Every miss reason's name (rc::MissReason from Cold on)
+QStringList missReasonNames() {
+    QStringList out;
+    for (int i = 1; i < rc::kMissReasons; ++i) out << text(rc::toString(rc::MissReason(i)));
+    return out;
+}
 /// "a, b or c"
 QString oneOf(QStringList names) {
     const QString last = names.takeLast();
@@ -60,6 +66,11 @@ QString toString(SceneAngle a) {
         case SceneAngle::Front: return "front";
     }
     return "side";
+}
+
+const QStringList& panelNames() {
+    static const QStringList names{"ray-tree", "cache-tree", "statistics", "event-log", "objects"};
+    return names;
 }
 
 std::optional<SceneAngle> parseSceneAngle(const QString& s) {
@@ -102,8 +113,18 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption gloss("gloss", "half-angle in degrees of the cone of glossy reflections (default 0)", "DEG");
     const QCommandLineOption glossSamples("gloss-samples", "reflection rays per hit when --gloss > 0", "K");
     const QCommandLineOption seed("seed", "seed of distributed ray tracing's samples (default 1986)", "S");
+    // Lectures
+    const QCommandLineOption tour("tour", "open a tour: a JSON file of stops, each a caption and what to show (PageDown/PageUp move)", "file");
+    const QCommandLineOption stop("stop", "--tour: the stop to open on, from 1 (default 1)", "K");
+    const QCommandLineOption focus("focus", "fit the view to this image rectangle, in pixels", "x0,y0,x1,y1");
+    const QCommandLineOption missReason("miss-reason", "Next miss stops only at misses of this reason (" + missReasonNames().join(", ") + ")", "reason");
+    const QCommandLineOption frameLog("frame-log", "write one line per UI-thread task, NAME MILLISECONDS, to this file", "file");
+    const QCommandLineOption panels("panels", "the panels to show: " + panelNames().join(", ") + ", all or none", "list");
+    const QCommandLineOption run("run", "after --steps, trace on to the next-miss (of --miss-reason, if given) or next-deferral, and focus on it", "goal");
+    const QCommandLineOption walk("walk", "quit once shown (with --tour: show every stop from --stop on in turn, then quit): for --frame-log");
     for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large,
-                          present, compare, sceneView, orbit, spp, lightRadius, shadowSamples, gloss, glossSamples, seed})
+                          present, compare, sceneView, orbit, spp, lightRadius, shadowSamples, gloss, glossSamples, seed,
+                          tour, stop, focus, missReason, frameLog, panels, run, walk})
         p.addOption(o);
     // --scene-view may come alone (the side view): give it its default value
     QStringList argv = args;
@@ -117,6 +138,52 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     if (p.isSet(help)) {
         message = p.helpText();
         return ParseResult::Help;
+    }
+    if (args.size() <= 1 || p.isSet(tour)) {
+        if (p.isSet(tour)) out.tour = p.value(tour);
+        if (p.isSet(stop) && (!p.isSet(tour) || !parseInt(p.value(stop), 1, 100000, out.stop))) {
+            message = p.isSet(tour) ? "--stop must be a stop number from 1" : "--stop needs --tour";
+            return ParseResult::Error;
+        }
+    }
+    if (p.isSet(frameLog)) out.frameLog = p.value(frameLog);
+    out.walk = p.isSet(walk);
+    if (p.isSet(run)) {
+        const QString v = p.value(run).trimmed().toLower();
+        if (v == "next-miss") out.runTo = rc::RunGoal::NextMiss;
+        else if (v == "next-deferral") out.runTo = rc::RunGoal::NextDeferral;
+        else { message = "--run must be next-miss or next-deferral, not '" + p.value(run) + "'"; return ParseResult::Error; }
+    }
+    if (p.isSet(panels)) {
+        const QString v = p.value(panels).trimmed().toLower();
+        QStringList shown;
+        if (v == "all") shown = panelNames();
+        else if (v != "none")
+            for (const QString& name : v.split(',')) {
+                if (!panelNames().contains(name.trimmed())) {
+                    message = "--panels takes a comma-separated list of " + panelNames().join(", ") + ", or all or none, not '" + name + "'";
+                    return ParseResult::Error;
+                }
+                shown << name.trimmed();
+            }
+        out.panels = shown;
+    }
+    if (p.isSet(focus)) {
+        const QStringList c = p.value(focus).split(',');
+        int v[4] = {0, 0, 0, 0};
+        bool ok = c.size() == 4;
+        for (int i = 0; ok && i < 4; ++i) ok = parseInt(c[i].trimmed(), 0, 16384, v[i]);
+        if (!ok || v[2] <= v[0] || v[3] <= v[1]) {
+            message = "--focus must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '" + p.value(focus) + "'";
+            return ParseResult::Error;
+        }
+        out.focus = QRect(QPoint(v[0], v[1]), QPoint(v[2] - 1, v[3] - 1));
+    }
+    if (p.isSet(missReason)) {
+        const QStringList names = missReasonNames();
+        const int i = int(names.indexOf(p.value(missReason).trimmed().toLower()));
+        if (i < 0) { message = "--miss-reason must be " + oneOf(names) + ", not '" + p.value(missReason) + "'"; return ParseResult::Error; }
+        out.missReason = rc::MissReason(i + 1);
     }
     if (args.size() <= 1) {
         out.firstImpression = true;
@@ -246,6 +313,40 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         return ParseResult::Error;
     }
     return ParseResult::Ok;
+}
+
+std::optional<GuiOptions> stopOptions(const rc::Tour& tour, int stop, const GuiOptions& base, QString& message) {
+    const rc::TourStop& st = tour.stops.at(std::size_t(stop - 1));
+    // The stop's settings as flags, the scene as the positional argument
+    QStringList args{"raycache-gui"};
+    for (const rc::TourSetting& s : st.settings) {
+        if (s.key == "scene") {
+            args << QString::fromStdString(s.value);
+            continue;
+        }
+        args << "--" + QString::fromStdString(s.key);
+        if (!s.value.empty()) args << QString::fromStdString(s.value);
+    }
+    GuiOptions o;
+    QString why;
+    if (parseGuiOptions(args, o, why) != ParseResult::Ok) {
+        message = QString("%1:%2:%3: stop %4 (%5): %6")
+                      .arg(QString::fromStdString(tour.file)).arg(st.line).arg(st.column).arg(stop)
+                      .arg(QString::fromStdString(st.title), why);
+        return std::nullopt;
+    }
+    // A stop shows the panels it names, no others
+    if (!o.panels) o.panels = QStringList();
+    // What the command line chose for the whole run stays: window, fonts, outputs
+    o.walk = base.walk;
+    o.window = base.window;
+    o.largeFonts = base.largeFonts;
+    o.present = base.present;
+    o.screenshot = base.screenshot;
+    o.frameLog = base.frameLog;
+    o.tour = base.tour;
+    o.stop = stop;
+    return o;
 }
 
 }  // namespace rcgui

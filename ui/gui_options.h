@@ -4,12 +4,15 @@
 #include <optional>
 
 #include <QPoint>
+#include <QRect>
 #include <QSize>
 #include <QString>
 #include <QStringList>
 
 #include "overlay_options.h"
 #include "render/render_session.h"
+#include "view/session_state.h"
+#include "view/tour.h"
 
 namespace rcgui {
 
@@ -32,6 +35,9 @@ enum class SceneAngle {
     Front,  ///< from the eye's side, without perspective
 };
 QString toString(SceneAngle a);
+
+/// The docks --panels names, in the window's order.
+const QStringList& panelNames();
 std::optional<SceneAngle> parseSceneAngle(const QString& s);
 
 /// What the command line asks for.
@@ -59,6 +65,17 @@ struct GuiOptions {
     SceneAngle sceneAngle = SceneAngle::Side;
     double orbitYaw = 0.0, orbitPitch = 0.0;  ///< --orbit: degrees turned from that angle
     bool sceneGiven = false;
+    QRect focus;                 ///< --focus: the image rectangle (pixels) the view fits; empty: the whole image
+    rc::MissReason missReason = rc::MissReason::None;  ///< --miss-reason: Next miss stops at this reason only
+    QString tour;                ///< --tour: the tour file to open
+    int stop = 1;                ///< --stop: its stop to open on (from 1)
+    QString frameLog;            ///< --frame-log: one line per UI-thread task, NAME MILLISECONDS
+    /// --panels: the docks to show (ray-tree, cache-tree, statistics, event-log, objects);
+    /// unset: as they are. A tour's stop shows only those it names.
+    std::optional<QStringList> panels;
+    /// --run next-miss|next-deferral: after the steps, trace on to the next such ray and focus on it
+    std::optional<rc::RunGoal> runTo;
+    bool walk = false;           ///< --walk: quit when shown (with --tour: after every stop in turn)
     /// No arguments at all: open on a partly traced image with a hit ray in focus, its
     /// hull, blockers and the frontier shown (the paper at a glance).
     bool firstImpression = false;
@@ -70,5 +87,10 @@ enum class ParseResult { Ok, Help, Error };
 /// Parses `args` (argv, program name first). On Help, `message` is the help text; on
 /// Error, it says what is wrong.
 ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message);
+
+/// The options a tour stop stands for: its settings read as the command line's flags, on
+/// top of `base`'s window, fonts and output choices. On an error, `message` is
+/// `file:line:column: stop K: ...` and nothing is returned.
+std::optional<GuiOptions> stopOptions(const rc::Tour& tour, int stop, const GuiOptions& base, QString& message);
 
 }  // namespace rcgui

@@ -8,7 +8,7 @@
 
 namespace rcgui {
 
-double HeatmapBuilder::scaleOf(const SessionState& s, Heatmap mode) {
+double HeatmapBuilder::scaleOf(const rc::SessionState& s, Heatmap mode) {
     if (mode == Heatmap::VisitOrder) return std::max<double>(1.0, double(s.session().steps()));
     if (mode == Heatmap::HitRate) return 1.0;
     if (mode != Heatmap::Tests) return 0.0;
@@ -18,15 +18,15 @@ double HeatmapBuilder::scaleOf(const SessionState& s, Heatmap mode) {
     return double(most);
 }
 
-std::optional<double> HeatmapBuilder::hitRate(const SessionState& s, int px) {
+std::optional<double> HeatmapBuilder::hitRate(const rc::SessionState& s, int px) {
     const double hits = s.recorder().hitsAt(px), misses = s.recorder().missesAt(px);
     if (hits + misses == 0) return std::nullopt;
     return hits / (hits + misses);
 }
 
-QImage HeatmapBuilder::build(const SessionState& s, Heatmap mode, int path, double top) {
+QImage HeatmapBuilder::build(const rc::SessionState& s, Heatmap mode, int path, double top) {
     if (mode == Heatmap::None) return SessionController::imageOf(s);
-    const TraceRecorder& rec = s.recorder();
+    const rc::TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height(), n = w * h;
     QImage img(w, h, QImage::Format_RGB32);
     img.fill(Qt::black);

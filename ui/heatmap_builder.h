@@ -6,7 +6,7 @@
 #include <QImage>
 
 #include "overlay_options.h"
-#include "session_state.h"
+#include "view/session_state.h"
 
 namespace rcgui {
 
@@ -18,13 +18,13 @@ public:
     /// `top` fixes the value that maps to the top of the colour ramp (tests per pixel, or
     /// steps for the visiting order); 0 takes the state's own largest value. Two renders
     /// compared side by side share one `top`, so equal colours mean equal values.
-    static QImage build(const SessionState& s, Heatmap mode, int path = 0, double top = 0.0);
+    static QImage build(const rc::SessionState& s, Heatmap mode, int path = 0, double top = 0.0);
     /// The state's own top of the scale for `mode`: its most tests in one pixel, or its
     /// step count (at least 1), or 1 for the hit rate; 0 for pictures without a scale.
-    static double scaleOf(const SessionState& s, Heatmap mode);
+    static double scaleOf(const rc::SessionState& s, Heatmap mode);
     /// The cache hit rate of pixel `px`: hits / (hits + misses) over the lookups of every
     /// ray of the pixel, all samples; nothing when it made none (no cache, or untraced).
-    static std::optional<double> hitRate(const SessionState& s, int px);
+    static std::optional<double> hitRate(const rc::SessionState& s, int px);
 };
 
 }  // namespace rcgui

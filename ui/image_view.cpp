@@ -22,8 +22,11 @@ ImageView::ImageView(QWidget* parent) : QWidget(parent) {
 void ImageView::setImage(const QImage& image) {
     const bool resized = image.size() != image_.size();
     image_ = image;
-    if (resized) fitted_ = true;
-    if (fitted_) fit();
+    if (resized) {
+        fitted_ = true;
+        focus_ = QRectF();
+    }
+    if (fitted_) refit();
     update();
 }
 
@@ -34,9 +37,21 @@ void ImageView::setGridEnabled(bool on) {
 
 void ImageView::fit() {
     fitted_ = true;
+    focus_ = QRectF();
     if (image_.isNull() || width() <= 0 || height() <= 0) return;
     zoom_ = std::min(double(width()) / image_.width(), double(height()) / image_.height());
     pan_ = QPointF((width() - zoom_ * image_.width()) / 2, (height() - zoom_ * image_.height()) / 2);
+    update();
+    emit viewMoved();
+}
+
+void ImageView::fitRect(const QRectF& r) {
+    if (r.isEmpty()) return fit();
+    fitted_ = true;
+    focus_ = r;
+    if (width() <= 0 || height() <= 0) return;
+    zoom_ = std::clamp(std::min(double(width()) / r.width(), double(height()) / r.height()), 0.05, 200.0);
+    pan_ = QPointF(width() / 2.0, height() / 2.0) - zoom_ * r.center();
     update();
     emit viewMoved();
 }
@@ -137,7 +152,12 @@ void ImageView::mouseReleaseEvent(QMouseEvent* e) {
 }
 
 void ImageView::resizeEvent(QResizeEvent*) {
-    if (fitted_) fit();
+    if (fitted_) refit();
+}
+
+void ImageView::refit() {
+    if (focus_.isEmpty()) fit();
+    else fitRect(focus_);
 }
 
 void ImageView::keyPressEvent(QKeyEvent* e) {

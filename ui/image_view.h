@@ -41,6 +41,9 @@ public:
     void setZoom(double zoom, const QPointF& pan);
     /// Fits the whole image in the widget.
     void fit();
+    /// Fits image rectangle `r` (pixels) to the view, centred; it stays fitted as the view
+    /// is resized, until the user zooms or pans. An empty `r` fits the whole image.
+    void fitRect(const QRectF& r);
 
     QPointF imageToWidget(const QPointF& p) const { return pan_ + zoom_ * p; }
     QPointF widgetToImage(const QPointF& w) const { return (w - pan_) / zoom_; }
@@ -73,6 +76,8 @@ private:
     double zoom_ = 1.0;
     QPointF pan_{0, 0};
     bool fitted_ = false;  ///< follows the widget's size until the user zooms or pans
+    QRectF focus_;         ///< the rectangle fitted (empty: the whole image)
+    void refit();
     bool grid_ = true;
     bool dragging_ = false;
     QPointF pressPos_, lastPos_;

@@ -10,11 +10,11 @@ QString objectLabel(const rc::Scene& scene, int object) {
     return QString("#%1 %2").arg(object).arg(scene.objects[object].shape == rc::Shape::Sphere ? "sphere" : "polygon");
 }
 
-QString decisionText(const EventRecord& r) {
+QString decisionText(const rc::EventRecord& r) {
     QString d = text(rc::toString(r.rayDecision()));
     if (r.missReason() != rc::MissReason::None) d += ": " + text(rc::toString(r.missReason()));
     if (r.deferred()) d = "deferred, " + d;
-    if (r.flags & EventRecord::Searched) d += " (searched)";
+    if (r.flags & rc::EventRecord::Searched) d += " (searched)";
     return d;
 }
 

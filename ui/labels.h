@@ -3,7 +3,7 @@
 /// \brief Short readable names of core enums and objects for the panels.
 #include <QString>
 
-#include "event_record.h"
+#include "view/event_record.h"
 #include "scene/scene.h"
 
 namespace rcgui {
@@ -12,6 +12,6 @@ QString text(std::string_view s);
 /// "#12 sphere" or "nothing".
 QString objectLabel(const rc::Scene& scene, int object);
 /// "hit", "miss: blocker_hit", "deferred: target_missed", "search".
-QString decisionText(const EventRecord& r);
+QString decisionText(const rc::EventRecord& r);
 
 }  // namespace rcgui

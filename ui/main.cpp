@@ -5,12 +5,15 @@
 #include <QApplication>
 #include <QMessageBox>
 #include <QTextStream>
+#include <QTimer>
 
+#include "frame_log.h"
 #include "gui_options.h"
 #include "main_window.h"
 #include "screenshot.h"
 
 int main(int argc, char** argv) {
+    rcgui::FrameLog::sinceStart();  // the clock of first-frame starts here
     QStringList args;
     for (int i = 0; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
     QTextStream out(stdout), err(stderr);
@@ -22,6 +25,29 @@ int main(int argc, char** argv) {
             err << "raycache-gui: " << message << "\n(try raycache-gui --help)" << Qt::endl;
             return 2;
         case rcgui::ParseResult::Ok: break;
+    }
+    // A tour: every stop read before anything is shown, so a bad one is found at once
+    rc::Tour tour;
+    std::vector<rcgui::GuiOptions> stops;
+    if (!opt.tour.isEmpty()) {
+        try {
+            tour = rc::loadTour(opt.tour.toStdString());
+        } catch (const rc::TourError& e) {
+            err << "raycache-gui: " << e.what() << Qt::endl;
+            return 2;
+        }
+        for (int k = 1; k <= int(tour.stops.size()); ++k) {
+            const auto o = rcgui::stopOptions(tour, k, opt, message);
+            if (!o) {
+                err << "raycache-gui: " << message << Qt::endl;
+                return 2;
+            }
+            stops.push_back(*o);
+        }
+        if (opt.stop > int(stops.size())) {
+            err << "raycache-gui: --stop " << opt.stop << ": " << opt.tour << " has " << stops.size() << " stops" << Qt::endl;
+            return 2;
+        }
     }
     // No display: render headless, to a PNG
     const bool noDisplay = qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
@@ -36,17 +62,52 @@ int main(int argc, char** argv) {
         opt.screenshot = "raycache-gui.png";
         out << "raycache-gui: no --screenshot given: writing " << opt.screenshot << Qt::endl;
     }
-    QApplication app(argc, argv);
+    rcgui::TimedApplication app(argc, argv);
     QApplication::setApplicationName("raycache-gui");
+    if (!opt.frameLog.isEmpty() && !rcgui::FrameLog::instance().open(opt.frameLog)) {
+        err << "raycache-gui: cannot write " << opt.frameLog << Qt::endl;
+        return 2;
+    }
     if (!opt.record.isEmpty()) return rcgui::recordSequence(opt, out, err);
-    if (!opt.screenshot.isEmpty()) return rcgui::renderScreenshot(opt, out, err);
+    if (!opt.screenshot.isEmpty()) {
+        if (tour.stops.empty()) return rcgui::renderScreenshot(opt, out, err);
+        rcgui::GuiOptions shot = stops[std::size_t(opt.stop - 1)];
+        shot.screenshot = opt.screenshot;
+        return rcgui::renderScreenshot(shot, out, err, &tour, stops);
+    }
 
+    // The window first, then its rays, traced on the worker: it never waits for them
     rcgui::MainWindow w;
-    if (!rcgui::applyOptions(w, opt, err)) return 2;
+    if (opt.largeFonts) w.setLargeFonts(true);
+    if (opt.present) w.setPresentation(true);
+    bool ok = true;
+    w.setErrorReporter([&](const QString& title, const QString& text) {
+        err << "raycache-gui: " << title.toLower() << ": " << text << Qt::endl;
+        ok = false;
+    });
+    w.show();
+    // --walk: each stop in turn once it is shown and nothing runs, then quit
+    if (opt.walk) {
+        auto* idle = new QTimer(&w);
+        idle->setInterval(100);
+        QObject::connect(&w, &rcgui::MainWindow::shown, idle, qOverload<>(&QTimer::start));
+        QObject::connect(idle, &QTimer::timeout, &w, [&w, idle] {
+            if (w.controller().busy() || w.compareController().busy()) return;
+            idle->stop();
+            if (w.stop() > 0 && w.stop() < w.stopCount()) w.goToStop(w.stop() + 1);
+            else QApplication::quit();
+        });
+    }
+    if (!stops.empty()) {
+        w.setTour(tour, stops);
+        w.goToStop(opt.stop);
+    } else {
+        w.apply(opt, false);
+    }
+    if (!ok) return 2;
     // From now on, errors are the user's to read in a message box
     w.setErrorReporter([&w](const QString& title, const QString& text) {
         QMessageBox::critical(&w, title, text);
     });
-    w.show();
     return app.exec();
 }

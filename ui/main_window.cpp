@@ -19,10 +19,14 @@
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QScreen>
 #include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
 
 #include "cache_tree_panel.h"
 #include "event_log_panel.h"
+#include "frame_log.h"
 #include "heatmap_builder.h"
 #include "image_view.h"
 #include "labels.h"
@@ -61,16 +65,31 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     split->addWidget(compareView_);
     split->addWidget(sceneView_);
     split->setChildrenCollapsible(false);
+    split_ = split;
     compareView_->hide();
     sceneView_->hide();
-    setCentralWidget(split);
+    // A tour's caption above the views, in the font of the rest (large on a projector)
+    auto* central = new QWidget(this);
+    auto* column = new QVBoxLayout(central);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    tourCaption_ = new QLabel(central);
+    tourCaption_->setObjectName("tourCaption");
+    tourCaption_->setWordWrap(true);
+    tourCaption_->setTextFormat(Qt::RichText);
+    tourCaption_->setContentsMargins(10, 6, 10, 6);
+    tourCaption_->setStyleSheet("QLabel#tourCaption { background: #1d2733; color: #f4f4f4; }");
+    tourCaption_->hide();
+    column->addWidget(tourCaption_);
+    column->addWidget(split, 1);
+    setCentralWidget(central);
     // The compared render: the same overlays, the selection carried over by pixel and path
     compareView_->setOverlayHook([this](QPainter& p, double scale) {
-        if (const SessionState* c = compare_.state(); c && compareChoice_)
+        if (const rc::SessionState* c = compare_.state(); c && compareChoice_)
             comparePainter_.paint(p, *c, overlays_, compareSelection(), scale);
     });
     compareView_->setLegendHook([this](QPainter& p, const QRectF& area) {
-        if (const SessionState* c = compare_.state(); c && compareChoice_) {
+        if (const rc::SessionState* c = compare_.state(); c && compareChoice_) {
             const QRectF image(compareView_->imageToWidget(QPointF(0, 0)),
                                compareView_->imageToWidget(QPointF(compareView_->image().width(), compareView_->image().height())));
             comparePainter_.paintLegend(p, *c, overlays_, compareSelection(), area, image);
@@ -98,10 +117,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (heatmap_ == Heatmap::None) compareView_->setImage(img);
     });
     view_->setOverlayHook([this](QPainter& p, double scale) {
-        if (const SessionState* s = controller_.state()) overlayPainter_.paint(p, *s, overlays_, selection_, scale);
+        if (const rc::SessionState* s = controller_.state()) overlayPainter_.paint(p, *s, overlays_, selection_, scale);
     });
     view_->setLegendHook([this](QPainter& p, const QRectF& area) {
-        if (const SessionState* s = controller_.state()) {
+        if (const rc::SessionState* s = controller_.state()) {
             const QRectF image(view_->imageToWidget(QPointF(0, 0)),
                                view_->imageToWidget(QPointF(view_->image().width(), view_->image().height())));
             overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, image);
@@ -124,11 +143,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&controller_, &SessionController::finished, this, [this](bool completed) {
         statusBar()->showMessage(completed ? "run finished" : "run cancelled", 5000);
         // Next miss / Next deferral: the ray in focus is the one they stopped on
-        if (const SessionState* s = controller_.state(); s && s->stopEvent() >= 0) selectEvent(s->stopEvent());
+        if (const rc::SessionState* s = controller_.state(); s && s->stopEvent() >= 0) selectEvent(s->stopEvent());
+        // A stop's rays are traced: on to its miss, or show the rest of it
+        if (pending_ && completed) continuePending();
+        else pending_.reset();
     });
     playTimer_.setInterval(33);
     connect(&playTimer_, &QTimer::timeout, this, &MainWindow::onPlayTick);
-    resize(1400, 900);
+    buildTourBar();
+    // Never larger than the screen (a 1280x720 projector)
+    QSize size(1400, 900);
+    if (const QScreen* screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size());
+    resize(size);
     updateControls();
 }
 
@@ -139,9 +166,9 @@ MainWindow::~MainWindow() {
     compare_.wait();
 }
 
-QString pixelTooltip(const SessionState* s, int x, int y) {
+QString pixelTooltip(const rc::SessionState* s, int x, int y) {
     if (!s || x < 0 || y < 0 || x >= s->width() || y >= s->height()) return {};
-    const TraceRecorder& rec = s->recorder();
+    const rc::TraceRecorder& rec = s->recorder();
     const int px = y * s->width() + x;
     if (rec.firstVisit(px) < 0) return QString("pixel (%1,%2): not traced yet").arg(x).arg(y);
     QString t = QString("pixel (%1,%2): %3 tests, %4 hits, %5 misses, first ray at step %6")
@@ -156,15 +183,15 @@ QString pixelTooltip(const SessionState* s, int x, int y) {
     return t;
 }
 
-Selection MainWindow::compareSelection() const {
+rc::Selection MainWindow::compareSelection() const {
     // The same pixel; the chosen ray carried over by its pixel and path
-    Selection sel = selection_;
+    rc::Selection sel = selection_;
     sel.event = -1;
-    const SessionState* s = controller_.state();
-    const SessionState* c = compare_.state();
+    const rc::SessionState* s = controller_.state();
+    const rc::SessionState* c = compare_.state();
     if (!c || sel.pixel >= c->width() * c->height()) return {};
     if (s && selection_.event >= 0 && std::size_t(selection_.event) < s->recorder().events().size()) {
-        const EventRecord& r = s->recorder().events()[std::size_t(selection_.event)];
+        const rc::EventRecord& r = s->recorder().events()[std::size_t(selection_.event)];
         sel.event = c->recorder().eventAt(r.pixel, r.node);
         if (sel.event < 0) sel.pixel = r.pixel;
     }
@@ -174,8 +201,8 @@ Selection MainWindow::compareSelection() const {
 double MainWindow::heatmapTop() const {
     // Two renders side by side share one scale: the larger of their own
     if (!compareChoice_ || (heatmap_ != Heatmap::Tests && heatmap_ != Heatmap::VisitOrder)) return 0.0;
-    const SessionState* s = controller_.state();
-    const SessionState* c = compare_.state();
+    const rc::SessionState* s = controller_.state();
+    const rc::SessionState* c = compare_.state();
     if (!s || !c) return 0.0;
     return std::max(HeatmapBuilder::scaleOf(*s, heatmap_), HeatmapBuilder::scaleOf(*c, heatmap_));
 }
@@ -232,18 +259,17 @@ void MainWindow::startCompare() {
     } catch (const std::exception& e) {
         reportError_("Cannot start the compared render", QString::fromUtf8(e.what()));
     }
-    QSplitter* split = qobject_cast<QSplitter*>(centralWidget());
-    if (split) split->setSizes({1000, 1000, sceneView_->isHidden() ? 0 : 1000});
+    split_->setSizes({1000, 1000, sceneView_->isHidden() ? 0 : 1000});
     compareView_->fit();
 }
 
 // [compare-sync]
 void MainWindow::syncCompare(bool now) {
     if (!compareChoice_) return;
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     if (!s) return;  // the first render is running: catch up when it hands its state back
     if (now && compare_.busy()) compare_.wait();
-    SessionState* c = compare_.state();
+    rc::SessionState* c = compare_.state();
     if (!c) return;  // the compared render is catching up on its worker
     const std::int64_t want = s->session().steps(), have = c->session().steps();
     if (want == have) {
@@ -255,7 +281,7 @@ void MainWindow::syncCompare(bool now) {
     // rebuilding and replaying when it lies behind
     constexpr std::int64_t kOnThisThread = 2000;
     if (want > have && (now || want - have <= kOnThisThread)) {
-        c->runUntil(RunGoal::ToStep, want);
+        c->runUntil(rc::RunGoal::ToStep, want);
         return;
     }
     compare_.goToStep(want);
@@ -266,8 +292,8 @@ void MainWindow::syncCompare(bool now) {
 void MainWindow::refreshCompare() {
     if (!compareChoice_) return;
     syncCompare();
-    const SessionState* c = compare_.state();
-    const SessionState* s = controller_.state();
+    const rc::SessionState* c = compare_.state();
+    const rc::SessionState* s = controller_.state();
     if (!c) return;
     const double top = heatmapTop();
     int path = 0;
@@ -296,8 +322,7 @@ void MainWindow::setSceneView(bool on) {
         const QSignalBlocker b(sceneViewAct_);
         sceneViewAct_->setChecked(on);
     }
-    if (QSplitter* split = qobject_cast<QSplitter*>(centralWidget()))
-        split->setSizes({1000, compareView_->isHidden() ? 0 : 1000, on ? 1000 : 0});
+    split_->setSizes({1000, compareView_->isHidden() ? 0 : 1000, on ? 1000 : 0});
     viewsChanged();
 }
 
@@ -306,7 +331,7 @@ void MainWindow::viewsChanged() {
     if (compareChoice_) compareView_->update();
     if (!sceneView_->isHidden()) {
         sceneView_->setLayers(overlays_.cylinder, overlays_.hull, overlays_.samples);
-        if (const SessionState* s = controller_.state())
+        if (const rc::SessionState* s = controller_.state())
             sceneView_->setSketch(SceneSketch::of(*s, selection_, overlays_.samples));
     }
 }
@@ -316,6 +341,7 @@ void MainWindow::buildToolbars() {
     QToolBar* render = addToolBar("Render");
     render->setObjectName("render");
     sceneBox_ = new QComboBox(this);
+    sceneBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     // Built-ins (cube:N and balls:N in the sizes the core suggests), then every scene of the
     // project's scenes/ folder
     for (const rc::BuiltinInfo& b : rc::builtinScenes()) {
@@ -346,6 +372,7 @@ void MainWindow::buildToolbars() {
     connect(sceneBox_, &QComboBox::activated, this, [this](int i) { loadScene(sceneBox_->itemData(i).toString()); });
 
     cacheBox_ = new QComboBox(this);
+    cacheBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     // Every cache, RayCache's blocker+ and blocker+dir beside the paper's two
     for (auto k : rc::allCacheKinds()) cacheBox_->addItem(text(rc::toString(k)), int(k));
     cacheBox_->setCurrentIndex(cacheBox_->findData(int(rc::CacheKind::Blocker)));
@@ -354,6 +381,7 @@ void MainWindow::buildToolbars() {
     connect(cacheBox_, &QComboBox::activated, this, [this](int i) { setCache(rc::CacheKind(cacheBox_->itemData(i).toInt())); });
 
     orderBox_ = new QComboBox(this);
+    orderBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     for (auto k : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
         orderBox_->addItem(text(rc::toString(k)), int(k));
     orderBox_->setCurrentIndex(2);
@@ -363,6 +391,7 @@ void MainWindow::buildToolbars() {
     connect(orderBox_, &QComboBox::activated, this, [this](int i) { setOrder(rc::OrderKind(orderBox_->itemData(i).toInt())); });
 
     accelBox_ = new QComboBox(this);
+    accelBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     for (auto k : {rc::AccelKind::Linear, rc::AccelKind::Grid, rc::AccelKind::Bvh})
         accelBox_->addItem(text(rc::toString(k)), int(k));
     accelBox_->setToolTip("What answers the complete searches: a linear scan, a uniform grid or a BVH");
@@ -371,6 +400,7 @@ void MainWindow::buildToolbars() {
     connect(accelBox_, &QComboBox::activated, this, [this](int i) { setAccel(rc::AccelKind(accelBox_->itemData(i).toInt())); });
 
     sizeBox_ = new QComboBox(this);
+    sizeBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     sizeBox_->addItem("scene's", 0);
     for (int n : {32, 64, 128, 256, 512, 1024}) sizeBox_->addItem(QString::number(n), n);
     render->addWidget(new QLabel(" Size ", this));
@@ -380,6 +410,7 @@ void MainWindow::buildToolbars() {
         resetSession();
     });
     compareBox_ = new QComboBox(this);
+    compareBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     compareBox_->addItem("off", "off");
     for (auto c : rc::allCacheKinds())
         for (auto o : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
@@ -409,7 +440,7 @@ void MainWindow::buildToolbars() {
     nextDeferralAct_->setShortcut(Qt::Key_D);
     nextDeferralAct_->setToolTip("Trace until a ray is deferred (its cheap test failed), and focus on it (D)");
     goToAct_ = step->addAction("Go to step…", this, [this] {
-        const SessionState* s = controller_.state();
+        const rc::SessionState* s = controller_.state();
         if (!s) return;
         bool ok = false;
         const qint64 n = QInputDialog::getInt(this, "Go to step", "Step:", int(s->session().steps()), 0,
@@ -469,6 +500,7 @@ void MainWindow::buildToolbars() {
     frontierAct_ = shown.value(2);
     missesAct_ = shown.value(3);
     heatmapBox_ = new QComboBox(this);
+    heatmapBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     heatmapBox_->addItem("image", int(Heatmap::None));
     heatmapBox_->addItem("tests per pixel", int(Heatmap::Tests));
     heatmapBox_->addItem("hits / misses", int(Heatmap::HitMiss));
@@ -515,9 +547,10 @@ void MainWindow::buildDocks() {
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     QDockWidget* rt = dock("Ray tree", rayTree_, Qt::RightDockWidgetArea);
     QDockWidget* ct = dock("Cache tree", cacheTree_, Qt::RightDockWidgetArea);
-    dock("Statistics", stats_, Qt::RightDockWidgetArea);
+    QDockWidget* st = dock("Statistics", stats_, Qt::RightDockWidgetArea);
     QDockWidget* log = dock("Event log", eventLog_, Qt::BottomDockWidgetArea);
     QDockWidget* obj = dock("Objects", objects_, Qt::BottomDockWidgetArea);
+    docks_ = {rt, ct, st, log, obj};  // in panelNames()' order
     tabifyDockWidget(rt, ct);
     rt->raise();
     tabifyDockWidget(log, obj);
@@ -543,6 +576,7 @@ bool MainWindow::loadScene(const QString& spec) {
         return false;
     }
     scene_ = std::move(scene);
+    sceneSpec_ = spec;
     QString key = spec;
     if (QFileInfo::exists(spec)) key = QFileInfo(spec).absoluteFilePath();
     int i = sceneBox_->findData(key);
@@ -575,7 +609,7 @@ void MainWindow::setAccel(rc::AccelKind k) {
 }
 
 int MainWindow::focusShowcase() {
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     if (!s) return -1;
     const rc::BlockerLists* lists = s->session().strategy().blockerLists();
     const auto& events = s->recorder().events();
@@ -585,7 +619,7 @@ int MainWindow::focusShowcase() {
     int best = -1;
     for (const bool reflected : {true, false}) {
         for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i) {
-            const EventRecord& r = events[std::size_t(i)];
+            const rc::EventRecord& r = events[std::size_t(i)];
             if (r.deferred() || r.hit < 0) continue;
             if (reflected != (r.rayKind() == rc::RayKind::Reflection) || (!reflected && r.node != 0)) continue;
             if (!lists) {
@@ -605,7 +639,7 @@ int MainWindow::focusShowcase() {
 }
 
 bool MainWindow::selectRay(int x, int y, const QString& path, QString& error) {
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     if (!s) {
         error = "no render to select in";
         return false;
@@ -622,7 +656,7 @@ bool MainWindow::selectRay(int x, int y, const QString& path, QString& error) {
     QStringList have;
     int found = -1;
     for (int i : s->recorder().eventsOf(y * s->width() + x)) {
-        const EventRecord& r = s->recorder().events()[std::size_t(i)];
+        const rc::EventRecord& r = s->recorder().events()[std::size_t(i)];
         const QString label = QString::fromStdString(tree.label(r.node));
         if (!have.contains(label)) have << label;
         if (norm(label) == norm(path) && (found < 0 || !r.deferred())) found = i;
@@ -693,15 +727,39 @@ void MainWindow::setPresentation(bool on) {
         presentAct_->setChecked(on);  // comes back here through toggled()
         return;
     }
-    for (QDockWidget* d : findChildren<QDockWidget*>()) d->setVisible(!on);
+    // Leaving brings back the panels that were shown, the tabs that were raised and the
+    // fonts that were chosen
+    if (on == presenting_) return;
+    presenting_ = on;
+    if (on) {
+        shownBeforePresent_.clear();
+        for (QDockWidget* d : docks_)
+            if (d->isVisible()) shownBeforePresent_ << d;
+        fontsBeforePresent_ = largeFonts_;
+    }
+    for (QDockWidget* d : docks_) d->setVisible(on ? false : shownBeforePresent_.contains(d));
     for (QToolBar* t : findChildren<QToolBar*>())
         if (t->objectName() == "render") t->setVisible(!on);
-    if (largeAct_) largeAct_->setChecked(on);
-    else setLargeFonts(on);
+    const bool large = on || fontsBeforePresent_;
+    if (largeAct_) largeAct_->setChecked(large);
+    else setLargeFonts(large);
     view_->fit();
 }
 
+void MainWindow::showPanels(const QStringList& names) {
+    for (int i = 0; i < int(docks_.size()); ++i) {
+        const bool on = names.contains(panelNames()[i]);
+        docks_[std::size_t(i)]->setVisible(on);
+        if (on) docks_[std::size_t(i)]->raise();
+    }
+}
+
 void MainWindow::setLargeFonts(bool on) {
+    largeFonts_ = on;
+    if (largeAct_ && largeAct_->isChecked() != on) {
+        const QSignalBlocker b(largeAct_);
+        largeAct_->setChecked(on);
+    }
     if (stats_) stats_->setLargeFonts(on);
     overlays_.lineScale = on ? 1.8 : 1.0;
     QFont f = QApplication::font();
@@ -713,7 +771,7 @@ void MainWindow::setLargeFonts(bool on) {
 }
 
 void MainWindow::selectPixel(int x, int y) {
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     if (!s || x < 0 || y < 0 || x >= s->width() || y >= s->height()) {
         selection_.pixel = -1;
     } else {
@@ -726,7 +784,7 @@ void MainWindow::selectPixel(int x, int y) {
 }
 
 bool MainWindow::selectEvent(int event) {
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     if (!s || event < 0 || std::size_t(event) >= s->recorder().events().size()) return false;
     const int pixel = s->recorder().events()[std::size_t(event)].pixel;
     if (pixel != selection_.pixel) selectPixel(pixel % s->width(), pixel / s->width());
@@ -742,16 +800,19 @@ void MainWindow::selectObject(int object) {
 }
 
 void MainWindow::stepRay() { controller_.stepRay(); }
-void MainWindow::stepPixel() { controller_.start(RunGoal::NextPixel); }
-void MainWindow::runToNextMiss() { controller_.start(RunGoal::NextMiss); }
-void MainWindow::runToNextDeferral() { controller_.start(RunGoal::NextDeferral); }
+void MainWindow::stepPixel() { controller_.start(rc::RunGoal::NextPixel); }
+void MainWindow::runToNextMiss() {
+    if (rc::SessionState* s = controller_.state()) s->setMissFilter(missFilter_);
+    controller_.start(rc::RunGoal::NextMiss);
+}
+void MainWindow::runToNextDeferral() { controller_.start(rc::RunGoal::NextDeferral); }
 void MainWindow::goToStep(qint64 step) {
     setPlaying(false);
     controller_.goToStep(step);
 }
 void MainWindow::runToEnd() {
     setPlaying(false);
-    controller_.start(RunGoal::ToEnd);
+    controller_.start(rc::RunGoal::ToEnd);
 }
 void MainWindow::stepBack() {
     setPlaying(false);
@@ -774,7 +835,7 @@ void MainWindow::setPlaying(bool on) {
 }
 
 void MainWindow::onPlayTick() {
-    SessionState* s = controller_.state();
+    rc::SessionState* s = controller_.state();
     if (!s) return;
     const double perSecond = std::pow(10.0, speed_->value() / 25.0);
     playCredit_ += perSecond * playTimer_.interval() / 1000.0;
@@ -788,13 +849,13 @@ void MainWindow::onPlayTick() {
 }
 
 int MainWindow::beamPath() const {
-    if (const SessionState* s = controller_.state())
+    if (const rc::SessionState* s = controller_.state())
         if (const auto& e = s->recorder().lastCommitted()) return e->task.node;
     return 0;
 }
 
 void MainWindow::refresh() {
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     if (!s) return;
     const double top = heatmapTop();
     overlayPainter_.setHeatmap(heatmap_, top);
@@ -806,7 +867,7 @@ void MainWindow::refresh() {
     int pixel = selection_.pixel;
     if (pixel < 0 && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
     rayTree_->showPixel(s, pixel);
-    if (const auto f = RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
+    if (const auto f = rc::RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
     statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
     updateControls();
     if (compareChoice_) refreshCompare();
@@ -825,7 +886,7 @@ void MainWindow::onBusyChanged(bool busy) {
 
 void MainWindow::updateControls() {
     const bool busy = controller_.busy();
-    const SessionState* s = controller_.state();
+    const rc::SessionState* s = controller_.state();
     const bool canStep = !busy && s && !s->session().done();
     for (QAction* a : {stepRayAct_, stepPixelAct_, nextMissAct_, nextDeferralAct_, runAct_}) if (a) a->setEnabled(canStep);
     if (goToAct_) goToAct_->setEnabled(!busy && s);
@@ -876,5 +937,175 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     compare_.wait();
     e->accept();
 }
+
+// [apply-stop]
+bool MainWindow::apply(const GuiOptions& o, bool wait) {
+    FrameTask task("apply");
+    // Whatever runs gives way to the new state
+    pending_.reset();
+    setPlaying(false);
+    for (SessionController* c : {&controller_, &compare_}) {
+        c->cancel();
+        c->wait();
+    }
+    // Choose everything first, then build one session with these choices
+    setOverlays(o.overlays);
+    options_.cache = o.cache;
+    options_.order = o.order;
+    options_.accel = o.accel;
+    options_.shading.sampling = o.sampling;
+    options_.width = std::max(0, o.width);
+    options_.height = std::max(0, o.height);
+    sizeChoice_ = o.width > 0 || o.height > 0 ? -1 : 0;
+    cacheBox_->setCurrentIndex(cacheBox_->findData(int(o.cache)));
+    orderBox_->setCurrentIndex(orderBox_->findData(int(o.order)));
+    accelBox_->setCurrentIndex(accelBox_->findData(int(o.accel)));
+    sizeBox_->setCurrentIndex(sizeChoice_ == 0 ? 0 : sizeBox_->findData(std::max(o.width, o.height)));
+    compareChoice_ = o.compare;
+    compareView_->setVisible(o.compare.has_value());
+    if (!o.compare) {
+        compare_.clear();
+        comparePainter_.setExtraCaption({});
+    }
+    compareBox_->setCurrentIndex(std::max(0, o.compare ? compareBox_->findData(toString(*o.compare)) : 0));
+    missFilter_ = o.missReason;
+    if (o.panels) showPanels(*o.panels);
+    selection_ = {};
+    if (scene_ && o.scene == sceneSpec_) resetSession();
+    else if (!loadScene(o.scene)) return false;
+    // The stop's rays, and on to the miss or deferral it shows: here when asked to wait,
+    // else on the worker (the window stays live)
+    if (rc::SessionState* s = controller_.state()) s->setMissFilter(missFilter_);
+    if (!wait && (o.steps > 0 || o.runTo)) {
+        pending_ = o;
+        pendingRun_ = false;
+        if (o.steps > 0) controller_.goToStep(o.steps);
+        else continuePending();
+        return true;
+    }
+    if (rc::SessionState* s = controller_.state()) {
+        if (o.steps > 0) s->runUntil(rc::RunGoal::ToStep, o.steps);
+        if (o.runTo) s->runUntil(*o.runTo, 0);
+    }
+    return finishApply(o, wait);
+}
+
+void MainWindow::continuePending() {
+    if (pending_->runTo && !pendingRun_) {
+        pendingRun_ = true;
+        if (controller_.start(*pending_->runTo)) return;
+    }
+    const GuiOptions o = *pending_;
+    pending_.reset();
+    finishApply(o, false);
+}
+
+bool MainWindow::finishApply(const GuiOptions& o, bool wait) {
+    if (compareChoice_) syncCompare(wait);
+    setHeatmap(o.heatmap);
+    setSceneView(o.sceneView);
+    if (o.sceneView) {
+        sceneView_->setAngle(o.sceneAngle);
+        sceneView_->setOrbit(o.orbitYaw, o.orbitPitch);
+    }
+    refresh();
+    // The miss or deferral run to; else, the scene view with nothing selected: a ray worth
+    // seeing from the side
+    const rc::SessionState* s = controller_.state();
+    if (o.runTo && s && s->stopEvent() >= 0) selectEvent(s->stopEvent());
+    else if (o.firstImpression || (o.sceneView && o.select.x() < 0)) focusShowcase();
+    if (o.select.x() >= 0) {
+        QString why;
+        if (!selectRay(o.select.x(), o.select.y(), o.selectPath, why)) {
+            reportError_("Cannot select", "--select: " + why);
+            return false;
+        }
+    }
+    frameViews(o);
+    emit shown();
+    return true;
+}
+// [apply-stop]
+
+void MainWindow::frameViews(const GuiOptions& o) {
+    // The compared view follows the first's zoom and pan from here on
+    if (compareChoice_) compareView_->fit();
+    if (!o.focus.isEmpty()) {
+        view_->fitRect(QRectF(o.focus));
+    } else if (o.zoom != 1.0) {
+        // Zoom about the selected pixel, else the pixel of the ray being traced
+        view_->fit();
+        QPointF centre(view_->image().width() / 2.0, view_->image().height() / 2.0);
+        const rc::SessionState* s = controller_.state();
+        int pixel = selection_.pixel;
+        if (pixel < 0 && s && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
+        if (s && pixel >= 0) centre = QPointF(pixel % s->width() + 0.5, pixel / s->width() + 0.5);
+        // The rectangle that, fitted, is `o.zoom` times the whole image's fit
+        const double z = o.zoom * view_->zoom();
+        const QSizeF seen(view_->width() / z, view_->height() / z);
+        view_->fitRect(QRectF(centre - QPointF(seen.width(), seen.height()) / 2.0, seen));
+    } else {
+        view_->fit();
+    }
+}
+
+void MainWindow::buildTourBar() {
+    // Its own row at the top: where the lecture is, and the way on
+    addToolBarBreak(Qt::TopToolBarArea);
+    tourBar_ = new QToolBar("Tour", this);
+    tourBar_->setObjectName("tour");
+    addToolBar(Qt::TopToolBarArea, tourBar_);
+    QAction* back = tourBar_->addAction("◀ Stop", this, &MainWindow::previousStop);
+    back->setShortcuts({QKeySequence(Qt::Key_PageUp)});
+    back->setShortcutContext(Qt::ApplicationShortcut);
+    back->setToolTip("The previous stop (PageUp, as a presenter's clicker sends)");
+    stopBox_ = new QComboBox(this);
+    stopBox_->setFocusPolicy(Qt::NoFocus);
+    stopBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    stopBox_->setToolTip("The tour's stops: choose one to go there");
+    tourBar_->addWidget(stopBox_);
+    connect(stopBox_, &QComboBox::activated, this, [this](int i) { goToStop(i + 1); });
+    QAction* next = tourBar_->addAction("Stop ▶", this, &MainWindow::nextStop);
+    next->setShortcuts({QKeySequence(Qt::Key_PageDown)});
+    next->setShortcutContext(Qt::ApplicationShortcut);
+    next->setToolTip("The next stop (PageDown, as a presenter's clicker sends)");
+    QAction* again = tourBar_->addAction("As written", this, &MainWindow::restoreStop);
+    again->setShortcut(Qt::Key_R);
+    again->setToolTip("Back to this stop as the tour wrote it, after stepping, selecting or toggling (R)");
+    tourBar_->hide();
+}
+
+void MainWindow::setTour(const rc::Tour& tour, std::vector<GuiOptions> stops) {
+    tour_ = tour;
+    stops_ = std::move(stops);
+    stop_ = 0;
+    const QSignalBlocker b(stopBox_);
+    stopBox_->clear();
+    for (std::size_t i = 0; i < tour_.stops.size(); ++i)
+        stopBox_->addItem(QString("%1/%2  %3").arg(i + 1).arg(tour_.stops.size()).arg(QString::fromStdString(tour_.stops[i].title)));
+    tourBar_->setVisible(!stops_.empty());
+    if (!tour_.title.empty()) setWindowTitle(QString::fromStdString(tour_.title) + " — RayCache");
+}
+
+bool MainWindow::goToStop(int stop, bool wait) {
+    if (stop < 1 || stop > stopCount()) return false;
+    FrameTask task(QString("stop-%1").arg(stop));
+    stop_ = stop;
+    {
+        const QSignalBlocker b(stopBox_);
+        stopBox_->setCurrentIndex(stop - 1);
+    }
+    const rc::TourStop& st = tour_.stops[std::size_t(stop - 1)];
+    tourCaption_->setText(QString("<b>%1/%2 &nbsp;%3.</b> %4")
+                              .arg(stop).arg(stopCount())
+                              .arg(QString::fromStdString(st.title).toHtmlEscaped(),
+                                   QString::fromStdString(st.caption).toHtmlEscaped()));
+    tourCaption_->show();
+    return apply(stops_[std::size_t(stop - 1)], wait);
+}
+
+QString MainWindow::tourCaption() const { return tourCaption_->isVisible() || stop_ > 0 ? tourCaption_->text() : QString(); }
+
+void MainWindow::setMissFilter(rc::MissReason r) { missFilter_ = r; }
 
 }  // namespace rcgui

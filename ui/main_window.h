@@ -17,8 +17,11 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QSlider;
+class QSplitter;
+class QToolBar;
 
 namespace rcgui {
 
@@ -26,9 +29,11 @@ namespace rcgui {
 /// scenes/ as configured at build time.
 QString scenesFolder();
 
-class SessionState;
+}
+namespace rc { class SessionState; }
+namespace rcgui {
 /// The hover text of pixel (x, y) of a render (empty outside it or without one).
-QString pixelTooltip(const SessionState* s, int x, int y);
+QString pixelTooltip(const rc::SessionState* s, int x, int y);
 
 class CacheTreePanel;
 class EventLogPanel;
@@ -106,7 +111,29 @@ public:
     /// Puts recorded event `event` in focus (its pixel selected); false if there is no such event.
     bool selectEvent(int event);
     void selectObject(int object);
-    const Selection& selection() const { return selection_; }
+    const rc::Selection& selection() const { return selection_; }
+
+    /// Applies a whole state, as the command line or a tour stop gives it: scene, cache,
+    /// order, search, size, overlays, heatmap, compare, scene view and angle, the first
+    /// `o.steps` rays, selection, zoom or focus rectangle, miss filter. What `o` leaves out
+    /// is reset (no compare, no scene view, the image fitted). The rays are traced on the
+    /// worker, and the rest applied when it is done, unless `wait`. False (and the error
+    /// reported) on a bad scene or selection.
+    bool apply(const GuiOptions& o, bool wait);
+    /// Opens a tour whose stops' options are already read (stopOptions()); shows its strip.
+    void setTour(const rc::Tour& tour, std::vector<GuiOptions> stops);
+    /// Goes to stop `stop` (from 1) of the tour, as written. False if there is no such stop.
+    bool goToStop(int stop, bool wait = false);
+    /// The stop shown (from 1; 0: no tour) and how many there are.
+    int stop() const { return stop_; }
+    int stopCount() const { return int(stops_.size()); }
+    /// The tour's caption as shown above the image ("" without a tour).
+    QString tourCaption() const;
+    /// Next miss stops only at misses of this reason (rc::MissReason::None: any).
+    void setMissFilter(rc::MissReason r);
+    /// Shows the docks `names` lists (panelNames()), raised, and hides the others.
+    void showPanels(const QStringList& names);
+    rc::MissReason missFilter() const { return missFilter_; }
 
     SessionController& controller() { return controller_; }
     const OverlayPainter& overlayPainter() const { return overlayPainter_; }
@@ -127,15 +154,28 @@ public slots:
     void stepBack();
     void cancelRun();
     void setPlaying(bool on);
+    void nextStop() { goToStop(stop_ + 1); }
+    void previousStop() { goToStop(stop_ - 1); }
+    /// Back to the stop as written, after stepping, selecting or toggling from it.
+    void restoreStop() { goToStop(stop_); }
     void openSceneDialog();
     /// Refreshes the picture and every panel from the state.
     void refresh();
+
+signals:
+    /// apply() (a stop, or the command line) has shown everything it asked for.
+    void shown();
 
 protected:
     void closeEvent(QCloseEvent* e) override;
 
 private:
     void buildToolbars();
+    void buildTourBar();
+    /// The rest of apply(), once its rays are traced.
+    bool finishApply(const GuiOptions& o, bool wait);
+    /// Zoom and focus rectangle of `o` on the views (fitted when it gives neither).
+    void frameViews(const GuiOptions& o);
     void buildDocks();
     void onBusyChanged(bool busy);
     void onPlayTick();
@@ -143,13 +183,30 @@ private:
     int beamPath() const;
     void refreshCompare();
     /// The selection as it applies to the compared render.
-    Selection compareSelection() const;
+    rc::Selection compareSelection() const;
     /// The image size and choices a new render gets.
     rc::RenderOptions effectiveOptions() const;
     /// Repaints the views and rebuilds the scene view's sketch (after a selection change).
     void viewsChanged();
     double heatmapTop() const;
     void startCompare();
+
+    std::optional<GuiOptions> pending_;  ///< apply()'s rest, waiting for its rays
+    bool pendingRun_ = false;            ///< its run to the next miss or deferral has started
+    /// The next part of pending_: its run to a miss or deferral, else the rest of apply().
+    void continuePending();
+    rc::Tour tour_;
+    std::vector<GuiOptions> stops_;
+    int stop_ = 0;
+    QToolBar* tourBar_ = nullptr;
+    QComboBox* stopBox_ = nullptr;
+    QLabel* tourCaption_ = nullptr;
+    QSplitter* split_ = nullptr;
+    QString sceneSpec_;  ///< as loadScene() was given it
+    rc::MissReason missFilter_ = rc::MissReason::None;
+    std::vector<QDockWidget*> docks_;  ///< in panelNames()' order
+    QList<QDockWidget*> shownBeforePresent_;
+    bool fontsBeforePresent_ = false, largeFonts_ = false, presenting_ = false;
 
     SessionController controller_;
     SessionController compare_;
@@ -165,7 +222,7 @@ private:
     int sizeChoice_ = 0;  ///< 0: the scene's size, else the longer side
     Overlays overlays_;
     Heatmap heatmap_ = Heatmap::None;
-    Selection selection_;
+    rc::Selection selection_;
     OverlayPainter overlayPainter_;
     ErrorReporter reportError_;
     QTimer playTimer_;

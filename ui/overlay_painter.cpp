@@ -70,7 +70,7 @@ QPointF pixelCentre(int pixel, int width) {
 
 }  // namespace
 
-void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
+void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
                            double scale) {
     p.setRenderHint(QPainter::Antialiasing, true);
     work_ = {};
@@ -87,7 +87,7 @@ void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o
     if (sel.object >= 0 && sel.object < s.scene().size())
         paintObject(p, s, proj, sel.object, palette::kSelection, withAlpha(palette::kSelection, 70), 3.0);
     // One ray in focus: the selected one, else the one being traced
-    if (auto f = RayFocus::of(s, sel)) {
+    if (auto f = rc::RayFocus::of(s, sel)) {
         if (o.samples) paintSamples(p, s, proj, *f);
         paintFocus(p, s, proj, *f, o);
     }
@@ -101,8 +101,8 @@ void OverlayPainter::paint(QPainter& p, const SessionState& s, const Overlays& o
     if (o.frontier) paintFrontier(p, s, scale, true);
 }
 
-void OverlayPainter::paintFocus(QPainter& p, const SessionState& s, const Projector& proj,
-                                const RayFocus& f, const Overlays& o) {
+void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj,
+                                const rc::RayFocus& f, const Overlays& o) {
     if (o.hull) paintHull(p, s, proj, f);
     if (o.cylinder) paintCylinder(p, s, proj, f);
     if (!(o.hull || o.cylinder)) return;
@@ -117,10 +117,10 @@ void OverlayPainter::paintFocus(QPainter& p, const SessionState& s, const Projec
     p.drawEllipse(c, r, r);
 }
 
-void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Projector& proj,
-                                   const RayFocus& f) {
+void OverlayPainter::paintCylinder(QPainter& p, const rc::SessionState& s, const Projector& proj,
+                                   const rc::RayFocus& f) {
     // The active entry's cylinder when it has one, else the cylinder around this ray's segment
-    const FocusCylinder fc = cylinderOf(s, f);
+    const rc::FocusCylinder fc = rc::cylinderOf(s, f);
     const rc::SafetyCylinder& cyl = fc.cylinder;
     const bool cached = fc.cached;
     if (!(cyl.radius > 0.0)) return;
@@ -131,8 +131,8 @@ void OverlayPainter::paintCylinder(QPainter& p, const SessionState& s, const Pro
         line(p, *l, palette::kCylinder, 1.5 * lineScale_, Qt::DashLine);
 }
 
-void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
-    const FocusHull h = hullOf(s, f);
+void OverlayPainter::paintHull(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f) {
+    const rc::FocusHull h = rc::hullOf(s, f);
     // An eye ray that hit nothing: the cone of eye rays known to hit nothing either
     if (h.coneAngle >= 0.0) {
         const QPolygonF cone = proj.eyeCone(h.coneAxis, h.coneAngle);
@@ -167,7 +167,7 @@ void OverlayPainter::paintHull(QPainter& p, const SessionState& s, const Project
     }
 }
 
-void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Projector& proj, int object,
+void OverlayPainter::paintObject(QPainter& p, const rc::SessionState& s, const Projector& proj, int object,
                                  const QColor& lineColor, const QColor& fill, double width) {
     const rc::Scene& scene = s.scene();
     if (object < 0 || object >= scene.size()) return;
@@ -182,8 +182,8 @@ void OverlayPainter::paintObject(QPainter& p, const SessionState& s, const Proje
     }
 }
 
-void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f) {
-    const SampleFan& fan = s.fan(f.pixel);
+void OverlayPainter::paintSamples(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f) {
+    const rc::SampleFan& fan = s.fan(f.pixel);
     const double scale = std::sqrt(std::abs(p.transform().determinant()));
     // The lights' spheres the shadow samples go to
     for (const rc::Sphere& light : fan.lights) {
@@ -194,12 +194,12 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
     }
     // Every ray but the eye samples is a segment, clipped to the near plane and the view:
     // one list per colour
-    auto colourOf = [](FanOutcome o) {
+    auto colourOf = [](rc::FanOutcome o) {
         switch (o) {
-            case FanOutcome::Hit: return palette::kSampleRay;
-            case FanOutcome::Missed: return palette::kSampleMissed;
-            case FanOutcome::Lit: return palette::kShadowLit;
-            case FanOutcome::Blocked: return palette::kShadowBlocked;
+            case rc::FanOutcome::Hit: return palette::kSampleRay;
+            case rc::FanOutcome::Missed: return palette::kSampleMissed;
+            case rc::FanOutcome::Lit: return palette::kShadowLit;
+            case rc::FanOutcome::Blocked: return palette::kShadowBlocked;
         }
         return palette::kSampleRay;
     };
@@ -215,10 +215,10 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
     std::array<QVector<QLineF>, 4> lines;
     QVector<QLineF> beyond;  // blocked shadow rays: from the blocker on to their light point
     std::array<QVector<QPointF>, 2> dots;  // eye samples: where they meet the image (hit, missed)
-    for (const FanRay& r : fan.rays) {
+    for (const rc::FanRay& r : fan.rays) {
         if (r.kind == rc::RayKind::Primary) {
             if (auto c = proj.point(r.to); c && view.contains(*c)) {
-                dots[r.outcome == FanOutcome::Hit ? 0 : 1] << *c;
+                dots[r.outcome == rc::FanOutcome::Hit ? 0 : 1] << *c;
                 ++work_.samples;
             }
             continue;
@@ -230,7 +230,7 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
             work_.maxCoord = std::max({work_.maxCoord, std::abs(l->x1()), std::abs(l->y1()), std::abs(l->x2()),
                                        std::abs(l->y2())});
         }
-        if (r.outcome == FanOutcome::Blocked)
+        if (r.outcome == rc::FanOutcome::Blocked)
             if (auto l = clip(r.to, r.aim)) beyond << *l;
     }
     // Solid pens only (a dash pattern costs a stroke per dash). A pen wider than a pixel
@@ -239,7 +239,7 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
     // one with a dark halo under each line, one path each, so that it reads on any image
     int count = int(beyond.size());
     for (const auto& l : lines) count += int(l.size());
-    const bool hairlines = count > SampleFan::kHaloRays;
+    const bool hairlines = count > rc::SampleFan::kHaloRays;
     const double width = hairlines ? 1.0 : 1.6 * lineScale_;
     p.setBrush(Qt::NoBrush);
     p.setPen(cosmetic(withAlpha(palette::kShadowBlocked, 90), 1.0));
@@ -250,7 +250,7 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
             for (const QLineF& one : l) p.drawLine(one);  // one short path each
     }
     for (int k = 0; k < 4; ++k) {
-        p.setPen(cosmetic(colourOf(FanOutcome(k)), width));
+        p.setPen(cosmetic(colourOf(rc::FanOutcome(k)), width));
         if (hairlines) p.drawLines(lines[k]);
         else
             for (const QLineF& one : lines[k]) p.drawLine(one);
@@ -264,9 +264,9 @@ void OverlayPainter::paintSamples(QPainter& p, const SessionState& s, const Proj
     }
 }
 
-void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers) {
+void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, double scale, bool markers) {
     const rc::FrontierView f = s.session().order().frontier();
-    const TraceRecorder& rec = s.recorder();
+    const rc::TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height();
     // Regions of the path being filled: finished ones tinted, the current one bright
     if (!markers && f.path >= 0) {
@@ -301,28 +301,36 @@ void OverlayPainter::paintFrontier(QPainter& p, const SessionState& s, double sc
     for (int px : f.queued) mark(px, palette::kQueued);
 }
 
-void OverlayPainter::paintMisses(QPainter& p, const SessionState& s, double scale, const Selection& sel) {
-    // Misses at the path of the ray in focus (eye, eye/reflection, ...), by reason
-    const TraceRecorder& rec = s.recorder();
+void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double scale, const rc::Selection& sel) {
+    // Misses at the path of the ray in focus (eye, eye/reflection, ...), by reason: one
+    // layer of pixels, kept while the render and the path stay (a paint draws one image,
+    // however many misses there are)
+    const rc::TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height();
-    const auto focus = RayFocus::of(s, sel);
+    const auto focus = rc::RayFocus::of(s, sel);
     const int path = focus ? focus->node : 0;
-    std::array<QVector<QPointF>, rc::kMissReasons> points;
-    for (int px = 0; px < w * h; ++px) {
-        const int i = rec.eventAt(px, path);
-        if (i < 0) continue;
-        const EventRecord& r = rec.events()[i];
-        if (r.rayDecision() == rc::Decision::Miss) points[r.reason] << pixelCentre(px, w);
+    if (missesState_ != s.serial() || missesEvents_ != rec.events().size() || missesPath_ != path) {
+        misses_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
+        misses_.fill(Qt::transparent);
+        for (int px = 0; px < w * h; ++px) {
+            const int i = rec.eventAt(px, path);
+            if (i < 0) continue;
+            const rc::EventRecord& r = rec.events()[std::size_t(i)];
+            if (r.rayDecision() == rc::Decision::Miss)
+                misses_.setPixel(px % w, px / w, qPremultiply(palette::missReason(r.missReason()).rgba()));
+        }
+        missesState_ = s.serial();
+        missesEvents_ = rec.events().size();
+        missesPath_ = path;
     }
-    const double width = std::clamp(scale * 0.55, 2.0, 12.0);
-    for (int r = 1; r < rc::kMissReasons; ++r) {
-        if (points[r].isEmpty()) continue;
-        p.setPen(cosmetic(palette::missReason(rc::MissReason(r)), width));
-        p.drawPoints(points[r].constData(), int(points[r].size()));
-    }
+    // Smaller than a screen pixel: blended, so that no miss drops out of the picture
+    p.save();
+    p.setRenderHint(QPainter::SmoothPixmapTransform, scale < 1.0);
+    p.drawImage(QRectF(0, 0, w, h), misses_);
+    p.restore();
 }
 
-void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
+void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
                                  const QRectF& area, const QRectF& image) {
     QStringList caption;
     std::vector<std::pair<QColor, QString>> keys;
@@ -333,9 +341,9 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                    .arg(QString::fromUtf8(rc::toString(session.order().kind()).data()))
                    .arg(QString("%1x%2").arg(s.width()).arg(s.height()))
                    .arg(session.steps());
-    const auto focus = RayFocus::of(s, sel);
+    const auto focus = rc::RayFocus::of(s, sel);
     if (focus) {
-        const RayFocus& f = *focus;
+        const rc::RayFocus& f = *focus;
         QString d = QString::fromUtf8(rc::toString(f.decision).data());
         if (f.reason != rc::MissReason::None)
             d += QString(" (%1)").arg(QString::fromUtf8(rc::toString(f.reason).data()));
@@ -356,7 +364,12 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
         if (session.strategy().blockerLists()) {
             keys.push_back({palette::kHull, "blocker hull of origin and target (dashed: empty cone of eye rays)"});
             keys.push_back({palette::kTarget, "target (cached object)"});
-            keys.push_back({palette::kBlocker, "potential blockers"});
+            // A long list is drawn in part: say how much
+            const rc::FocusHull h = focus ? rc::hullOf(s, *focus) : rc::FocusHull{};
+            keys.push_back({palette::kBlocker, h.listed > h.blockers.size()
+                                                   ? QString("potential blockers: the %1 nearest of %L2 listed")
+                                                         .arg(h.blockers.size()).arg(h.listed)
+                                                   : QString("potential blockers")});
         } else {
             keys.push_back({palette::kHull, "blocker hull: blocker cache only"});
         }
@@ -387,7 +400,7 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                                     .arg(n.missReasons[r])});
     }
     if (o.samples && focus) {
-        const SampleFan& fan = s.fan(focus->pixel);
+        const rc::SampleFan& fan = s.fan(focus->pixel);
         const int eye = fan.count(rc::RayKind::Primary), shadow = fan.count(rc::RayKind::Shadow);
         const int other = int(fan.rays.size()) - eye - shadow;
         keys.push_back({Qt::transparent, QString("sample rays of pixel (%1,%2)%3:")
@@ -395,11 +408,11 @@ void OverlayPainter::paintLegend(QPainter& p, const SessionState& s, const Overl
                                              .arg(fan.cut ? QString(", the first %1").arg(fan.rays.size()) : QString())});
         keys.push_back({palette::kSampleRay, QString("%1 eye sample%2 (dots), %3 reflection/refraction ray%4: hit")
                                                  .arg(eye).arg(eye == 1 ? "" : "s").arg(other).arg(other == 1 ? "" : "s")});
-        keys.push_back({palette::kSampleMissed, QString("hit nothing (%1)").arg(fan.count(FanOutcome::Missed))});
+        keys.push_back({palette::kSampleMissed, QString("hit nothing (%1)").arg(fan.count(rc::FanOutcome::Missed))});
         keys.push_back({palette::kShadowLit, QString("shadow rays reaching the light (%1 of %2)")
-                                                 .arg(fan.count(FanOutcome::Lit)).arg(shadow)});
+                                                 .arg(fan.count(rc::FanOutcome::Lit)).arg(shadow)});
         keys.push_back({palette::kShadowBlocked, QString("shadow rays blocked (%1 of %2)")
-                                                     .arg(fan.count(FanOutcome::Blocked)).arg(shadow)});
+                                                     .arg(fan.count(rc::FanOutcome::Blocked)).arg(shadow)});
         double radius = 0.0;
         for (const rc::Sphere& l : fan.lights) radius = std::max(radius, l.r);
         if (radius > 0.0)

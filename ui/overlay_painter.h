@@ -7,7 +7,7 @@
 #include <QStringList>
 
 #include "overlay_options.h"
-#include "ray_focus.h"
+#include "view/ray_focus.h"
 
 namespace rcgui {
 
@@ -31,11 +31,11 @@ class OverlayPainter {
 public:
     /// Paints in image coordinates (the painter maps them to the widget); `scale` is
     /// widget pixels per image pixel, so marks keep a readable size at any zoom.
-    void paint(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel, double scale);
+    void paint(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel, double scale);
     /// Paints the caption and colour key in widget coordinates inside `area`.
     /// The key goes beside `image` (its rectangle in widget coordinates) when a margin
     /// has room, else over it.
-    void paintLegend(QPainter& p, const SessionState& s, const Overlays& o, const Selection& sel,
+    void paintLegend(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
                      const QRectF& area, const QRectF& image);
     /// The heatmap shown, for its colour bar in the key, and the top of its scale (0: the
     /// state's own; see HeatmapBuilder::build).
@@ -53,15 +53,15 @@ public:
     const QRectF& legendKey() const { return legendKey_; }
 
 private:
-    void paintFocus(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f,
+    void paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f,
                     const Overlays& o);
-    void paintCylinder(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f);
-    void paintHull(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f);
-    void paintObject(QPainter& p, const SessionState& s, const Projector& proj, int object,
+    void paintCylinder(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
+    void paintHull(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
+    void paintObject(QPainter& p, const rc::SessionState& s, const Projector& proj, int object,
                      const QColor& line, const QColor& fill, double width);
-    void paintFrontier(QPainter& p, const SessionState& s, double scale, bool markers);
-    void paintMisses(QPainter& p, const SessionState& s, double scale, const Selection& sel);
-    void paintSamples(QPainter& p, const SessionState& s, const Projector& proj, const RayFocus& f);
+    void paintFrontier(QPainter& p, const rc::SessionState& s, double scale, bool markers);
+    void paintMisses(QPainter& p, const rc::SessionState& s, double scale, const rc::Selection& sel);
+    void paintSamples(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
 
 public:
     /// What the last paint() drew.
@@ -75,10 +75,14 @@ private:
     bool keysShown_ = true;
     QRectF legendKey_;
     double lineScale_ = 1.0;
-    std::uint64_t cachedState_ = 0;  ///< SessionState::serial() of the cached layer
+    std::uint64_t cachedState_ = 0;  ///< rc::SessionState::serial() of the cached layer
     std::size_t cachedEvents_ = 0;
     int cachedPath_ = -1;
     QImage regions_;
+    std::uint64_t missesState_ = 0;  ///< the same for the misses layer
+    std::size_t missesEvents_ = 0;
+    int missesPath_ = -1;
+    QImage misses_;
 };
 
 }  // namespace rcgui

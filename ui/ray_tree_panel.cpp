@@ -18,7 +18,7 @@ RayTreePanel::RayTreePanel(QWidget* parent) : QTreeWidget(parent) {
     });
 }
 
-void RayTreePanel::showPixel(const SessionState* state, int pixel) {
+void RayTreePanel::showPixel(const rc::SessionState* state, int pixel) {
     const QSignalBlocker block(this);
     clear();
     pixel_ = pixel;
@@ -26,7 +26,7 @@ void RayTreePanel::showPixel(const SessionState* state, int pixel) {
     const rc::CacheTree& paths = state->session().cacheTree();
     std::map<int, QTreeWidgetItem*> byNode;  // committed ray of each path
     for (int i : state->recorder().eventsOf(pixel)) {
-        const EventRecord& r = state->recorder().events()[i];
+        const rc::EventRecord& r = state->recorder().events()[i];
         const int parentNode = paths.node(r.node).parent;
         auto parentIt = byNode.find(parentNode);
         auto* item = parentIt != byNode.end() ? new QTreeWidgetItem(parentIt->second) : new QTreeWidgetItem(this);

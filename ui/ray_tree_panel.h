@@ -3,7 +3,7 @@
 /// \brief Dock panel: the ray tree of one pixel, from the recorded events.
 #include <QTreeWidget>
 
-#include "session_state.h"
+#include "view/session_state.h"
 
 namespace rcgui {
 
@@ -14,7 +14,7 @@ class RayTreePanel : public QTreeWidget {
 public:
     explicit RayTreePanel(QWidget* parent = nullptr);
     /// Shows the rays of `pixel` (-1: clear). `state` may be null (a worker is running).
-    void showPixel(const SessionState* state, int pixel);
+    void showPixel(const rc::SessionState* state, int pixel);
     int pixel() const { return pixel_; }
     /// Marks the row of recorded event `event` as current (no rayChosen signal).
     void setCurrentEvent(int event);

@@ -51,7 +51,7 @@ QString num(double v) { return QString::number(v, 'g', 3); }
 
 }  // namespace
 
-SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel, bool samples) {
+SceneSketch SceneSketch::of(const rc::SessionState& s, const rc::Selection& sel, bool samples) {
     SceneSketch k;
     const rc::Scene& scene = s.scene();
     for (int id = 0; id < scene.size(); ++id) {
@@ -66,24 +66,24 @@ SceneSketch SceneSketch::of(const SessionState& s, const Selection& sel, bool sa
     k.up = perpendicular(k.forward, scene.camera.up);
     k.bound = scene.bound;
     k.hasCylinder = s.session().options().cache != rc::CacheKind::Blocker;
-    k.focus = RayFocus::of(s, sel);
+    k.focus = rc::RayFocus::of(s, sel);
     if (!k.focus) return k;
-    const RayFocus& f = *k.focus;
+    const rc::RayFocus& f = *k.focus;
     k.focusLabel = QString("%1 of pixel (%2,%3)")
                        .arg(QString::fromStdString(s.session().cacheTree().label(f.node)))
                        .arg(f.pixel % s.width())
                        .arg(f.pixel / s.width());
     // The pixel's ray tree: every committed ray, the one in focus marked
-    const TraceRecorder& rec = s.recorder();
+    const rc::TraceRecorder& rec = s.recorder();
     for (int i : rec.eventsOf(f.pixel)) {
         if (rec.events()[std::size_t(i)].deferred()) continue;
-        if (auto r = RayFocus::ofEvent(s, i))
+        if (auto r = rc::RayFocus::ofEvent(s, i))
             k.rays.push_back({r->ray.o, r->segmentEnd(scene), r->kind, i == f.event});
     }
     if (f.deferred) k.rays.push_back({f.ray.o, f.segmentEnd(scene), f.kind, true});
     if (samples) k.fan = s.fan(f.pixel);
-    k.hull = hullOf(s, f);
-    k.cylinder = cylinderOf(s, f);
+    k.hull = rc::hullOf(s, f);
+    k.cylinder = rc::cylinderOf(s, f);
     // The object that sets the cylinder's radius: nearest its axis, the ray's own excepted
     const rc::SafetyCylinder& c = k.cylinder.cylinder;
     if (c.radius >= 0.0) {
@@ -240,8 +240,8 @@ void SceneView::frame() {
             add(k.bodies[std::size_t(k.limiter)].bound.c, k.bodies[std::size_t(k.limiter)].bound.r);
         // The sample rays' hits and the lights' spheres they fan to
         if (samplesShown_ && !k.fan.rays.empty()) {
-            for (const FanRay& r : k.fan.rays)
-                if (r.kind != rc::RayKind::Primary && r.outcome != FanOutcome::Missed) add(r.to, 0.0);
+            for (const rc::FanRay& r : k.fan.rays)
+                if (r.kind != rc::RayKind::Primary && r.outcome != rc::FanOutcome::Missed) add(r.to, 0.0);
             for (const rc::Sphere& l : k.fan.lights)
                 if (l.r > 0.0) add(l.c, l.r);
         }
@@ -338,24 +338,24 @@ void SceneView::paintEvent(QPaintEvent*) {
     // The sample rays of the pixel in focus: the shadow rays fan out to the light's sphere
     const bool fan = samplesShown_ && !k.fan.rays.empty();
     if (fan) {
-        auto colourOf = [](FanOutcome o) {
-            return o == FanOutcome::Hit      ? palette::kSampleRay
-                   : o == FanOutcome::Missed ? palette::kSampleMissed
-                   : o == FanOutcome::Lit    ? palette::kShadowLit
+        auto colourOf = [](rc::FanOutcome o) {
+            return o == rc::FanOutcome::Hit      ? palette::kSampleRay
+                   : o == rc::FanOutcome::Missed ? palette::kSampleMissed
+                   : o == rc::FanOutcome::Lit    ? palette::kShadowLit
                                              : palette::kShadowBlocked;
         };
         // Solid pens (a dash pattern costs a stroke per dash); a large fan in hairlines and
         // without halos, as in the image view: wide pens are filled as paths, seconds for thousands
-        const bool hairlines = int(k.fan.rays.size()) > SampleFan::kHaloRays;
+        const bool hairlines = int(k.fan.rays.size()) > rc::SampleFan::kHaloRays;
         if (!hairlines)
-            for (const FanRay& r : k.fan.rays) {
+            for (const rc::FanRay& r : k.fan.rays) {
                 p.setPen(pen(QColor(0, 0, 0, 150), 3.0 * lw));
                 p.drawLine(toWidget(r.from), toWidget(r.to));
             }
-        for (const FanRay& r : k.fan.rays) {
+        for (const rc::FanRay& r : k.fan.rays) {
             p.setPen(pen(colourOf(r.outcome), hairlines ? 1.0 : 1.3 * lw));
             p.drawLine(toWidget(r.from), toWidget(r.to));
-            if (r.outcome == FanOutcome::Blocked) {
+            if (r.outcome == rc::FanOutcome::Blocked) {
                 p.setPen(pen(withAlpha(palette::kShadowBlocked, 90), 1.0));
                 p.drawLine(toWidget(r.to), toWidget(r.aim));
             }
@@ -448,12 +448,17 @@ void SceneView::paintEvent(QPaintEvent*) {
                                                             : "Front view (no perspective)";
     cap << (k.focus ? angleName + ": " + k.focusLabel : angleName + ": no ray in focus");
     if (k.hull.valid() && hullShown_) {
+        // The nearest few by number; the rest counted
+        constexpr std::size_t kNamed = 8;
         QStringList ids;
-        for (int id : k.hull.blockers)
+        for (std::size_t i = 0; i < std::min(kNamed, k.hull.blockers.size()); ++i) {
+            const int id = k.hull.blockers[i];
             ids << QString("#%1%2").arg(id).arg(k.focus && id == k.focus->origin.object ? " (the origin)" : "");
-        cap << QString("blocker hull of origin (r %1) and target (r %2): %3 potential blocker%4%5")
-                   .arg(num(k.hull.a.r), num(k.hull.b.r)).arg(k.hull.blockers.size())
-                   .arg(k.hull.blockers.size() == 1 ? "" : "s").arg(ids.isEmpty() ? "" : ": " + ids.join(", "));
+        }
+        if (k.hull.listed > ids.size()) ids << QString("and %L1 more").arg(k.hull.listed - std::size_t(ids.size()));
+        cap << QString("blocker hull of origin (r %1) and target (r %2): %L3 potential blocker%4%5")
+                   .arg(num(k.hull.a.r), num(k.hull.b.r)).arg(k.hull.listed)
+                   .arg(k.hull.listed == 1 ? "" : "s").arg(ids.isEmpty() ? "" : ": " + ids.join(", "));
     }
     if (k.focus && cyl.radius > 0.0 && cylinderShown_) {
         cap << QString("cylinder of safety%1: radius %2").arg(k.cylinder.cached ? "" : " (around this ray)", num(cyl.radius));
@@ -470,7 +475,7 @@ void SceneView::paintEvent(QPaintEvent*) {
         const int eye = k.fan.count(rc::RayKind::Primary), shadow = k.fan.count(rc::RayKind::Shadow);
         cap << QString("samples: %1 eye, %2 reflected or refracted, %3 shadow: %4 reach the light, %5 blocked%6")
                    .arg(eye).arg(int(k.fan.rays.size()) - eye - shadow).arg(shadow)
-                   .arg(k.fan.count(FanOutcome::Lit)).arg(k.fan.count(FanOutcome::Blocked))
+                   .arg(k.fan.count(rc::FanOutcome::Lit)).arg(k.fan.count(rc::FanOutcome::Blocked))
                    .arg(k.fan.cut ? QString(", the first %1").arg(k.fan.rays.size()) : QString());
     }
     caption_ = cap.join("\n");

@@ -11,8 +11,8 @@
 #include <QWidget>
 
 #include "gui_options.h"
-#include "ray_focus.h"
-#include "sample_fan.h"
+#include "view/ray_focus.h"
+#include "view/sample_fan.h"
 
 class QComboBox;
 class QCheckBox;
@@ -38,17 +38,17 @@ struct SceneSketch {
     rc::Vec3 eye{0.0}, forward{0, 0, -1}, up{0, 1, 0};
     rc::Sphere bound;                 ///< the scene's bounding sphere
     std::vector<Segment> rays;        ///< the ray tree of the pixel in focus
-    std::optional<RayFocus> focus;    ///< the ray in focus
+    std::optional<rc::RayFocus> focus;    ///< the ray in focus
     QString focusLabel;               ///< its path and pixel, e.g. "eye/reflection of pixel (3,4)"
-    FocusHull hull;
-    FocusCylinder cylinder;
+    rc::FocusHull hull;
+    rc::FocusCylinder cylinder;
     bool hasCylinder = false;         ///< the cache keeps cylinders (or none: drawn around the ray)
     int limiter = -1;                 ///< the object nearest the cylinder's axis: it sets the radius
-    SampleFan fan;                    ///< the sample rays of the pixel in focus (empty: not asked for)
+    rc::SampleFan fan;                    ///< the sample rays of the pixel in focus (empty: not asked for)
 
     /// The sketch of `s` with the ray `sel` puts in focus (and its pixel's sample rays
     /// when `samples`).
-    static SceneSketch of(const SessionState& s, const Selection& sel, bool samples = false);
+    static SceneSketch of(const rc::SessionState& s, const rc::Selection& sel, bool samples = false);
 };
 
 /// An orthographic projection: screen x and y, and z towards the viewer.

@@ -1,6 +1,8 @@
 #pragma once
 /// \file
 /// \brief Headless mode: build the window, trace N rays, write the window to a PNG.
+#include <vector>
+
 #include <QTextStream>
 
 #include "gui_options.h"
@@ -15,8 +17,10 @@ class MainWindow;
 bool applyOptions(MainWindow& w, const GuiOptions& o, QTextStream& err);
 
 /// Renders `o.screenshot` and returns the process exit status: 0 when written, 2 for a
-/// bad scene, 1 when the PNG cannot be written.
-int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err);
+/// bad scene, 1 when the PNG cannot be written. With a tour (its stops' options read by
+/// stopOptions()), the window shows its stop `o.stop`, strip and caption.
+int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err, const rc::Tour* tour = nullptr,
+                     const std::vector<GuiOptions>& stops = {});
 
 /// At most this many frames are recorded.
 inline constexpr int kMaxRecordedFrames = 10000;

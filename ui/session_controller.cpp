@@ -16,7 +16,7 @@ SessionController::~SessionController() {
     }
 }
 
-QImage SessionController::imageOf(const SessionState& s) {
+QImage SessionController::imageOf(const rc::SessionState& s) {
     const std::vector<std::uint8_t> rgb = s.session().image().rgb8();
     QImage img(s.width(), s.height(), QImage::Format_RGB888);
     for (int y = 0; y < s.height(); ++y)
@@ -25,10 +25,10 @@ QImage SessionController::imageOf(const SessionState& s) {
     return img;
 }
 
-void SessionController::reset(SessionConfig config) {
+void SessionController::reset(rc::SessionConfig config) {
     cancel();
     wait();
-    state_ = std::make_unique<SessionState>(std::move(config));
+    state_ = std::make_unique<rc::SessionState>(std::move(config));
     emit changed();
 }
 
@@ -46,14 +46,14 @@ bool SessionController::stepRay() {
     return more;
 }
 
-bool SessionController::start(RunGoal goal, std::int64_t target) { return launch(goal, target, -1); }
+bool SessionController::start(rc::RunGoal goal, std::int64_t target) { return launch(goal, target, -1); }
 
-bool SessionController::launch(RunGoal goal, std::int64_t target, std::int64_t rewindTo) {
+bool SessionController::launch(rc::RunGoal goal, std::int64_t target, std::int64_t rewindTo) {
     if (busy_ || !state_) return false;
     busy_ = true;
     cancel_ = false;
     emit busyChanged(true);
-    SessionState* s = state_.get();
+    rc::SessionState* s = state_.get();
     const std::uint64_t run = ++run_;
     worker_ = QThread::create([this, s, goal, target, run, rewindTo] {
         // [go-back]
@@ -95,8 +95,8 @@ bool SessionController::goToStep(std::int64_t step) {
     if (busy_ || !state_ || step < 0) return false;
     // Backwards: the core is deterministic, so the render replayed from a checkpoint
     // before `step` is the render as it was at that step
-    if (step < state_->session().steps()) return launch(RunGoal::ToStep, step, step);
-    return start(RunGoal::ToStep, step);
+    if (step < state_->session().steps()) return launch(rc::RunGoal::ToStep, step, step);
+    return start(rc::RunGoal::ToStep, step);
 }
 
 void SessionController::cancel() { cancel_ = true; }

@@ -7,7 +7,7 @@
 #include <QImage>
 #include <QObject>
 
-#include "session_state.h"
+#include "view/session_state.h"
 
 class QThread;
 
@@ -23,10 +23,10 @@ public:
     ~SessionController() override;
 
     /// Starts a new render (cancels a running worker first).
-    void reset(SessionConfig config);
+    void reset(rc::SessionConfig config);
     /// The state, or null while a worker runs or before the first reset().
-    SessionState* state() { return busy_ ? nullptr : state_.get(); }
-    const SessionState* state() const { return busy_ ? nullptr : state_.get(); }
+    rc::SessionState* state() { return busy_ ? nullptr : state_.get(); }
+    const rc::SessionState* state() const { return busy_ ? nullptr : state_.get(); }
     bool busy() const { return busy_; }
 
     /// Stops any worker and drops the state (state() is null afterwards).
@@ -34,7 +34,7 @@ public:
     /// Traces one ray on the calling (GUI) thread. False if busy or done.
     bool stepRay();
     /// Runs towards `goal` on a worker thread. False if busy.
-    bool start(RunGoal goal, std::int64_t target = 0);
+    bool start(rc::RunGoal goal, std::int64_t target = 0);
     /// Goes back one step, on the worker: back to the latest checkpoint before it, then
     /// forwards. The core is deterministic, so the state is the one of that step.
     bool stepBack();
@@ -50,7 +50,7 @@ public:
     void wait();
 
     /// The image as rgb8 converted to a QImage (the caller must not be racing a worker).
-    static QImage imageOf(const SessionState& s);
+    static QImage imageOf(const rc::SessionState& s);
 
 signals:
     /// The state changed (a step, a reset, a finished run): everything should refresh.
@@ -64,8 +64,8 @@ signals:
 private:
     void onWorkerDone(bool completed);
     /// start(), going back to the last checkpoint at or before `rewindTo` first (-1: not).
-    bool launch(RunGoal goal, std::int64_t target, std::int64_t rewindTo);
-    std::unique_ptr<SessionState> state_;
+    bool launch(rc::RunGoal goal, std::int64_t target, std::int64_t rewindTo);
+    std::unique_ptr<rc::SessionState> state_;
     QThread* worker_ = nullptr;
     std::atomic<bool> cancel_{false};
     std::atomic<bool> workerResult_{false};

@@ -11,7 +11,7 @@
 #include <QVBoxLayout>
 
 #include "labels.h"
-#include "session_state.h"
+#include "view/session_state.h"
 
 namespace rcgui {
 
@@ -75,7 +75,7 @@ void StatsPanel::showProgress(qint64 steps, double progress) {
 
 QString StatsPanel::summaryText() const { return text_->text(); }
 
-void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
+void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* other) {
     if (!state) return;
     const rc::RenderSession& s = state->session();
     const rc::Counters& n = s.counters();
@@ -134,8 +134,13 @@ void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
     }
     text_->setText(t);
 
+    // A chart a few hundred pixels wide shows no more points than that: every k-th sample
+    constexpr std::size_t kPoints = 400;
+    auto stride = [](std::size_t n) { return std::max<std::size_t>(1, (n + kPoints - 1) / kPoints); };
     QList<QPointF> h, m, te;
-    for (const StatSample& p : state->recorder().samples()) {
+    const std::vector<rc::StatSample>& samples = state->recorder().samples();
+    for (std::size_t i = 0; i < samples.size(); i += stride(samples.size())) {
+        const rc::StatSample& p = samples[i];
         h << QPointF(double(p.step), double(p.hits));
         m << QPointF(double(p.step), double(p.misses));
         te << QPointF(double(p.step), double(p.tests));
@@ -150,7 +155,9 @@ void StatsPanel::refresh(const SessionState* state, const SessionState* other) {
     otherTests_->setVisible(other != nullptr);
     if (other) {
         QList<QPointF> ot;
-        for (const StatSample& p : other->recorder().samples()) ot << QPointF(double(p.step), double(p.tests));
+        const std::vector<rc::StatSample>& theirs = other->recorder().samples();
+        for (std::size_t i = 0; i < theirs.size(); i += stride(theirs.size()))
+            ot << QPointF(double(theirs[i].step), double(theirs[i].tests));
         ot << QPointF(double(other->session().steps()), double(other->session().counters().intersectionTests));
         otherTests_->replace(ot);
         mostTests = std::max(mostTests, double(other->session().counters().intersectionTests));

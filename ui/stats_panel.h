@@ -10,7 +10,9 @@ class QChart;
 
 namespace rcgui {
 
-class SessionState;
+}
+namespace rc { class SessionState; }
+namespace rcgui {
 
 /// The session's counters as text and a Qt Charts line chart of cumulative hits and
 /// misses (left axis) and intersection tests (right axis) against steps.
@@ -23,7 +25,7 @@ public:
     /// Refreshes from `state` (null: a worker is running; shows only `steps`). With a
     /// compared render `other`, adds a table of both and their difference, and its tests
     /// to the chart.
-    void refresh(const SessionState* state, const SessionState* other = nullptr);
+    void refresh(const rc::SessionState* state, const rc::SessionState* other = nullptr);
     /// The text shown above the chart (HTML).
     QString summaryText() const;
     /// While a worker runs: the step count it reported.

@@ -24,20 +24,20 @@ int main(int argc, char** argv) {
     o.width = o.height = size;
     o.cache = rc::parseCacheKind(argc > 3 ? argv[3] : "blocker").value_or(rc::CacheKind::Blocker);
     o.order = rc::parseOrderKind(argc > 4 ? argv[4] : "bfs").value_or(rc::OrderKind::BreadthFirst);
-    const std::int64_t spacing = argc > 5 ? std::atoll(argv[5]) : StepCheckpoints::kEvery;
+    const std::int64_t spacing = argc > 5 ? std::atoll(argv[5]) : rc::StepCheckpoints::kEvery;
     auto scene = std::make_shared<const rc::Scene>(rc::loadScene(spec));
     // The cost of taking checkpoints: the same run with none after step 0
     for (std::int64_t every : {std::int64_t(1) << 40, spacing, std::int64_t(1) << 40, spacing}) {
-        SessionState s({scene, o, every});
+        rc::SessionState s({scene, o, every});
         auto t = Clock::now();
-        s.runUntil(RunGoal::ToEnd, 0);
+        s.runUntil(rc::RunGoal::ToEnd, 0);
         std::printf("run to the end, checkpoints every %lld steps: %.2f s (%s)\n", (long long)every,
                     std::chrono::duration<double>(Clock::now() - t).count(), s.checkpointSummary().c_str());
     }
     SessionController c;
     c.reset({scene, o, spacing});
     auto t0 = Clock::now();
-    c.start(RunGoal::ToEnd);
+    c.start(rc::RunGoal::ToEnd);
     c.wait();
     const std::int64_t total = c.state()->session().steps();
     const double run = std::chrono::duration<double>(Clock::now() - t0).count();

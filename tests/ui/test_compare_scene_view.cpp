@@ -36,10 +36,10 @@ struct Window {
         REQUIRE(w.loadScene(scene));
         rcgui::testing::showAt(w, 1400, 900);
     }
-    SessionState& state() { return rcgui::testing::stateOf(w); }
-    SessionState& compared() {
+    rc::SessionState& state() { return rcgui::testing::stateOf(w); }
+    rc::SessionState& compared() {
         w.compareController().wait();
-        SessionState* s = w.compareController().state();
+        rc::SessionState* s = w.compareController().state();
         REQUIRE(s != nullptr);
         return *s;
     }
@@ -84,8 +84,8 @@ TEST_CASE("Compared renders end on the same image, and the statistics show the d
     f.w.runToEnd();
     f.w.controller().wait();
     f.w.compareController().wait();
-    const SessionState& a = f.state();
-    const SessionState& b = f.compared();
+    const rc::SessionState& a = f.state();
+    const rc::SessionState& b = f.compared();
     REQUIRE(a.session().done());
     REQUIRE(b.session().done());
     REQUIRE(a.session().steps() == b.session().steps());
@@ -265,10 +265,10 @@ TEST_CASE("Scene view, the paper's Figure 1: along the ray, the cylinder is much
 TEST_CASE("Recording keeps at most 64 bytes per ray", "[gui][record]") {
     Window f("cube:3");
     f.goTo(150000);
-    const TraceRecorder& rec = f.state().recorder();
+    const rc::TraceRecorder& rec = f.state().recorder();
     const double events = double(rec.events().size());
     REQUIRE(events > 100000);
-    REQUIRE(sizeof(EventRecord) <= 56);
+    REQUIRE(sizeof(rc::EventRecord) <= 56);
     // Counted from what is allocated (blocks and their table, and the miss index)
     WARN("recording: " << double(rec.eventBytes()) / events << " bytes per event over " << events << " events");
     REQUIRE(double(rec.eventBytes()) / events <= 64.0);

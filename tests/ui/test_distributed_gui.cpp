@@ -9,7 +9,7 @@
 #include "render/parallel_render.h"
 #include "scene/builtin_scenes.h"
 #include "screenshot.h"
-#include "session_state.h"
+#include "view/session_state.h"
 
 using namespace rcgui;
 
@@ -40,7 +40,7 @@ TEST_CASE("The GUI takes distributed ray tracing options and renders the core im
     QTextStream err(&errors);
     o.steps = 1000000000;
     REQUIRE(applyOptions(w, o, err));
-    SessionState* s = w.controller().state();
+    rc::SessionState* s = w.controller().state();
     REQUIRE(s);
     REQUIRE(s->session().done());
     rc::RenderOptions core;

@@ -19,7 +19,7 @@
 #include "main_window.h"
 #include "window_fixture.h"
 #include "projector.h"
-#include "ray_focus.h"
+#include "view/ray_focus.h"
 #include "ray_tree_panel.h"
 #include "scene/builtin_scenes.h"
 #include "scene/sphereflake.h"
@@ -41,7 +41,7 @@ struct Window {
         rcgui::testing::showAt(w, 1000, 800);
         w.imageView()->fit();
     }
-    SessionState& state() { return rcgui::testing::stateOf(w); }
+    rc::SessionState& state() { return rcgui::testing::stateOf(w); }
     void paint() {
         w.refresh();
         w.imageView()->grab();
@@ -139,7 +139,7 @@ TEST_CASE("Stall probe: overlays on a shadow ray level with the eye draw a bound
     // cube:5 at step 49830 traces a shadow ray towards a light level with the camera
     // (the case that froze the window for seconds)
     Window f("cube:5");
-    f.state().runUntil(RunGoal::ToStep, 49830);
+    f.state().runUntil(rc::RunGoal::ToStep, 49830);
     f.w.setOverlays(*Overlays::parse("all"));
     f.paint();
     const PaintWork& work = f.w.overlayPainter().lastWork();
@@ -226,7 +226,7 @@ TEST_CASE("Focus rules: the selected ray, else the selected pixel's eye ray, els
     }
     f.w.stepRay();
     // Nothing selected: the ray being traced
-    auto focus = RayFocus::of(f.state(), f.w.selection());
+    auto focus = rc::RayFocus::of(f.state(), f.w.selection());
     REQUIRE(focus);
     REQUIRE_FALSE(focus->selected);
     REQUIRE(focus->event == int(f.state().recorder().events().size()) - 1);
@@ -235,7 +235,7 @@ TEST_CASE("Focus rules: the selected ray, else the selected pixel's eye ray, els
     const int pixel = f.state().recorder().events()[100].pixel;
     f.w.selectPixel(pixel % w, pixel / w);
     for (int i = 0; i < 50; ++i) f.w.stepRay();
-    focus = RayFocus::of(f.state(), f.w.selection());
+    focus = rc::RayFocus::of(f.state(), f.w.selection());
     REQUIRE(focus);
     REQUIRE(focus->selected);
     REQUIRE(focus->pixel == pixel);
@@ -246,26 +246,26 @@ TEST_CASE("Focus rules: the selected ray, else the selected pixel's eye ray, els
         if (f.state().recorder().events()[i].node != 0 && !f.state().recorder().events()[i].deferred()) deep = int(i);
     REQUIRE(deep >= 0);
     REQUIRE(f.w.selectEvent(deep));
-    focus = RayFocus::of(f.state(), f.w.selection());
+    focus = rc::RayFocus::of(f.state(), f.w.selection());
     REQUIRE(focus);
     REQUIRE(focus->event == deep);
     REQUIRE(focus->pixel == f.state().recorder().events()[std::size_t(deep)].pixel);
     // The same ray reached through --select x,y:path
-    const EventRecord& r = f.state().recorder().events()[std::size_t(deep)];
+    const rc::EventRecord& r = f.state().recorder().events()[std::size_t(deep)];
     const QString path = QString::fromStdString(f.state().session().cacheTree().label(r.node));
     QString why;
     REQUIRE(f.w.selectRay(r.pixel % w, r.pixel / w, path, why));
-    REQUIRE(RayFocus::of(f.state(), f.w.selection())->node == r.node);
+    REQUIRE(rc::RayFocus::of(f.state(), f.w.selection())->node == r.node);
     REQUIRE_FALSE(f.w.selectRay(r.pixel % w, r.pixel / w, "eye/sideways", why));
     REQUIRE(why.contains("eye/sideways"));
     REQUIRE_FALSE(f.w.selectRay(100000, 0, "", why));
     // Out-of-range events are refused, not read
     REQUIRE_FALSE(f.w.selectEvent(-5));
     REQUIRE_FALSE(f.w.selectEvent(int(f.state().recorder().events().size())));
-    REQUIRE_FALSE(RayFocus::ofEvent(f.state(), int(f.state().recorder().events().size())));
+    REQUIRE_FALSE(rc::RayFocus::ofEvent(f.state(), int(f.state().recorder().events().size())));
     // An untraced pixel: nothing in focus
     f.w.selectPixel(w - 1, f.state().height() - 1);
-    REQUIRE_FALSE(RayFocus::of(f.state(), f.w.selection()));
+    REQUIRE_FALSE(rc::RayFocus::of(f.state(), f.w.selection()));
 }
 
 TEST_CASE("The options select X Y PATH and accel parse and bad ones are errors", "[gui][cli][focus]") {
@@ -304,7 +304,7 @@ TEST_CASE("wait() runs no event loop, so it cannot be re-entered", "[gui][worker
     QTimer::singleShot(0, [&] { delivered = true; });  // stands for a user's click
     bool finished = false;
     QObject::connect(&f.w.controller(), &SessionController::finished, [&] { finished = true; });
-    REQUIRE(f.w.controller().start(RunGoal::ToStep, 2000));
+    REQUIRE(f.w.controller().start(rc::RunGoal::ToStep, 2000));
     f.w.controller().wait();
     REQUIRE_FALSE(f.w.controller().busy());
     REQUIRE(finished);          // the state was handed back
@@ -340,7 +340,7 @@ TEST_CASE("With no arguments the window opens on a partly traced image with a hi
     QString errText;
     QTextStream err(&errText);
     REQUIRE(applyOptions(w, o, err));
-    const SessionState* s = w.controller().state();
+    const rc::SessionState* s = w.controller().state();
     REQUIRE(s != nullptr);
     // Partly traced: some pixels visited, not all
     int visited = 0;
@@ -348,7 +348,7 @@ TEST_CASE("With no arguments the window opens on a partly traced image with a hi
     REQUIRE(visited > s->width() * s->height() / 5);
     REQUIRE(visited < s->width() * s->height());
     // A hit ray in focus whose hull holds potential blockers
-    const auto f = RayFocus::of(*s, w.selection());
+    const auto f = rc::RayFocus::of(*s, w.selection());
     REQUIRE(f);
     REQUIRE(f->selected);
     REQUIRE(f->hit >= 0);
@@ -417,7 +417,7 @@ TEST_CASE("Hovering a pixel tells its tests, hits and misses", "[gui][layout]") 
     Window f("pair", rc::CacheKind::Blocker, rc::OrderKind::Scanline);
     f.w.goToStep(3000);
     f.w.controller().wait();
-    const SessionState& s = f.state();
+    const rc::SessionState& s = f.state();
     REQUIRE(s.session().steps() == 3000);
     const int px = s.recorder().events()[10].pixel;
     const QString tip = f.w.imageView()->tooltipAt(px % s.width(), px / s.width());

@@ -20,7 +20,7 @@
 #include "window_fixture.h"
 #include "palette.h"
 #include "projector.h"
-#include "ray_focus.h"
+#include "view/ray_focus.h"
 #include "ray_tree_panel.h"
 #include "screenshot.h"
 #include "stats_panel.h"
@@ -42,7 +42,7 @@ struct Fixture {
         rcgui::testing::showAt(w, 1200, 900);
         w.imageView()->fit();
     }
-    SessionState& state() { return rcgui::testing::stateOf(w); }
+    rc::SessionState& state() { return rcgui::testing::stateOf(w); }
     QImage grabView() {
         w.refresh();
         QApplication::processEvents();
@@ -50,9 +50,9 @@ struct Fixture {
     }
 };
 
-int committed(const SessionState& s) {
+int committed(const rc::SessionState& s) {
     int n = 0;
-    for (const EventRecord& r : s.recorder().events()) n += r.deferred() ? 0 : 1;
+    for (const rc::EventRecord& r : s.recorder().events()) n += r.deferred() ? 0 : 1;
     return n;
 }
 
@@ -133,16 +133,16 @@ TEST_CASE("Next miss stops on a committed miss and puts it in focus, Next deferr
     f.w.controller().wait();
     const int miss = f.state().stopEvent();
     REQUIRE(miss >= 0);
-    const EventRecord& m = f.state().recorder().events()[std::size_t(miss)];
+    const rc::EventRecord& m = f.state().recorder().events()[std::size_t(miss)];
     REQUIRE_FALSE(m.deferred());
     REQUIRE(m.rayDecision() == rc::Decision::Miss);
     REQUIRE(m.missReason() != rc::MissReason::None);
     // No committed miss before it
     for (int i = 0; i < miss; ++i) {
-        const EventRecord& r = f.state().recorder().events()[std::size_t(i)];
+        const rc::EventRecord& r = f.state().recorder().events()[std::size_t(i)];
         REQUIRE((r.deferred() || r.rayDecision() != rc::Decision::Miss));
     }
-    auto focus = RayFocus::of(f.state(), f.w.selection());
+    auto focus = rc::RayFocus::of(f.state(), f.w.selection());
     REQUIRE(focus);
     REQUIRE(focus->event == miss);
     REQUIRE(focus->decision == rc::Decision::Miss);
@@ -153,7 +153,7 @@ TEST_CASE("Next miss stops on a committed miss and puts it in focus, Next deferr
     const int deferral = f.state().stopEvent();
     REQUIRE(deferral > miss);
     REQUIRE(f.state().recorder().events()[std::size_t(deferral)].deferred());
-    focus = RayFocus::of(f.state(), f.w.selection());
+    focus = rc::RayFocus::of(f.state(), f.w.selection());
     REQUIRE(focus);
     REQUIRE(focus->event == deferral);
     REQUIRE(focus->deferred);
@@ -163,8 +163,8 @@ TEST_CASE("Step back replays to the previous step", "[gui][step]") {
     Fixture f;
     for (int i = 0; i < 40; ++i) f.w.stepRay();
     const QImage at39 = [&] {
-        SessionState s(f.state().config());
-        s.runUntil(RunGoal::ToStep, 39);
+        rc::SessionState s(f.state().config());
+        s.runUntil(rc::RunGoal::ToStep, 39);
         return SessionController::imageOf(s);
     }();
     f.w.stepBack();
@@ -205,7 +205,7 @@ TEST_CASE("A click maps to the image pixel under it, at any zoom", "[gui][view]"
 
 TEST_CASE("Clicking the view selects the pixel and shows its ray tree", "[gui][view]") {
     Fixture f;
-    f.state().runUntil(RunGoal::ToEnd, 0);
+    f.state().runUntil(rc::RunGoal::ToEnd, 0);
     f.w.refresh();
     ImageView* v = f.w.imageView();
     v->setZoom(6.0, QPointF(-400.0, -300.0));
@@ -309,8 +309,8 @@ TEST_CASE("The frontier overlay marks queued pixels", "[gui][overlay]") {
 
 TEST_CASE("The miss overlay marks misses in their reason's colour", "[gui][overlay]") {
     Fixture f("pair");
-    f.state().runUntil(RunGoal::ToStep, 20000);
-    const TraceRecorder& rec = f.state().recorder();
+    f.state().runUntil(rc::RunGoal::ToStep, 20000);
+    const rc::TraceRecorder& rec = f.state().recorder();
     const int path = rec.lastEvent()->task.node;
     int pixel = -1;
     rc::MissReason reason = rc::MissReason::None;
@@ -380,7 +380,7 @@ TEST_CASE("The statistics say how RayCache's caches answered: direction lists, p
 
 TEST_CASE("Heatmaps replace the image", "[gui][overlay]") {
     Fixture f("pair");
-    f.state().runUntil(RunGoal::ToStep, 30000);
+    f.state().runUntil(rc::RunGoal::ToStep, 30000);
     f.w.setHeatmap(Heatmap::None);
     const QImage image = f.w.imageView()->image();
     for (Heatmap h : {Heatmap::Tests, Heatmap::HitMiss, Heatmap::VisitOrder, Heatmap::BeamNode}) {

@@ -17,10 +17,10 @@
 #include "main_window.h"
 #include "window_fixture.h"
 #include "palette.h"
-#include "sample_fan.h"
+#include "view/sample_fan.h"
 #include "scene_view.h"
 #include "screenshot.h"
-#include "session_state.h"
+#include "view/session_state.h"
 
 using namespace rcgui;
 
@@ -41,7 +41,7 @@ struct SampledWindow {
         rcgui::testing::showAt(w, 1200, 900);
         w.imageView()->fit();
     }
-    SessionState& state() { return rcgui::testing::stateOf(w); }
+    rc::SessionState& state() { return rcgui::testing::stateOf(w); }
 };
 
 const QStringList kSoft{"cube:4", "--cache", "blocker", "--order", "scanline", "--spp", "4", "--light-radius", "0.3",
@@ -51,13 +51,13 @@ const QStringList kSoft{"cube:4", "--cache", "blocker", "--order", "scanline", "
 
 TEST_CASE("The fan of a pixel: spp eye samples, K shadow rays per lit hit, each ending in the light's sphere", "[gui][samples]") {
     SampledWindow f(kSoft);
-    const SessionState& s = f.state();
+    const rc::SessionState& s = f.state();
     REQUIRE(s.session().done());
     const rc::Scene& scene = s.session().scene();
     REQUIRE(scene.lights.size() >= 1);
     int fully = 0, partly = 0, blocked = 0;
     for (int px = 0; px < s.width() * s.height(); px += 7) {
-        const SampleFan fan = SampleFan::trace(s.session(), px);
+        const rc::SampleFan fan = rc::SampleFan::trace(s.session(), px);
         INFO("pixel " << px);
         REQUIRE_FALSE(fan.cut);
         REQUIRE(fan.count(rc::RayKind::Primary) == 4);
@@ -67,18 +67,18 @@ TEST_CASE("The fan of a pixel: spp eye samples, K shadow rays per lit hit, each 
         REQUIRE(int(fan.rays.size()) == committed);
         std::map<std::pair<int, int>, int> perHitAndLight;
         int hits = 0;
-        for (const FanRay& r : fan.rays) {
+        for (const rc::FanRay& r : fan.rays) {
             if (r.kind != rc::RayKind::Shadow) {
                 hits += r.hit >= 0 ? 1 : 0;
                 continue;
             }
             ++perHitAndLight[{r.parent, r.light}];
-            blocked += r.outcome == FanOutcome::Blocked ? 1 : 0;
+            blocked += r.outcome == rc::FanOutcome::Blocked ? 1 : 0;
             // Every shadow ray goes to a point of its light's sphere; a lit one stops there
             const rc::Sphere& light = fan.lights[std::size_t(r.light)];
             REQUIRE(light.r == 0.3);
             REQUIRE(glm::length(r.aim - light.c) <= light.r * (1.0 + 1e-9));
-            if (r.outcome == FanOutcome::Lit) REQUIRE(glm::length(r.to - r.aim) <= 1e-9);
+            if (r.outcome == rc::FanOutcome::Lit) REQUIRE(glm::length(r.to - r.aim) <= 1e-9);
             else REQUIRE(glm::length(r.to - r.from) < glm::length(r.aim - r.from));
             REQUIRE(fan.rays[std::size_t(r.parent)].hit >= 0);
             REQUIRE(glm::length(fan.rays[std::size_t(r.parent)].to - r.from) <= 1e-9);
@@ -89,7 +89,7 @@ TEST_CASE("The fan of a pixel: spp eye samples, K shadow rays per lit hit, each 
             REQUIRE(n <= 8);
             shadows += n;
             // A light whose whole sphere lies on the lit side of the surface gets all K
-            const FanRay& hit = fan.rays[std::size_t(key.first)];
+            const rc::FanRay& hit = fan.rays[std::size_t(key.first)];
             const rc::Vec3 p = hit.to;
             rc::Vec3 normal = scene.normal(hit.hit, p);
             if (glm::dot(normal, hit.from - p) < 0.0) normal = -normal;
@@ -116,8 +116,8 @@ TEST_CASE("The samples overlay draws every ray of the fan, in the image and in t
     o.legend = true;
     f.w.setOverlays(o);
     f.w.selectPixel(16, 14);
-    const SessionState& s = f.state();
-    const SampleFan& fan = s.fan(14 * 32 + 16);
+    const rc::SessionState& s = f.state();
+    const rc::SampleFan& fan = s.fan(14 * 32 + 16);
     REQUIRE(fan.count(rc::RayKind::Shadow) > 0);
     f.w.refresh();
     f.w.imageView()->grab();
@@ -141,23 +141,23 @@ TEST_CASE("A fan over the ray limit is cut, and what it draws stays in the view 
                      "--gloss-samples", "4"},
                     20000);
     f.w.setOverlays(*Overlays::parse("all"));
-    const SessionState& s = f.state();
+    const rc::SessionState& s = f.state();
     // A pixel whose samples reach the limit (eye rays that hit a reflecting object)
     int px = -1;
-    for (const EventRecord& r : s.recorder().events())
-        if (!r.deferred() && r.rayKind() == rc::RayKind::Primary && r.hit >= 0 && SampleFan::trace(s.session(), r.pixel).cut) {
+    for (const rc::EventRecord& r : s.recorder().events())
+        if (!r.deferred() && r.rayKind() == rc::RayKind::Primary && r.hit >= 0 && rc::SampleFan::trace(s.session(), r.pixel).cut) {
             px = r.pixel;
             break;
         }
     REQUIRE(px >= 0);
     f.w.selectPixel(px % s.width(), px / s.width());
-    const SampleFan& fan = s.fan(px);
+    const rc::SampleFan& fan = s.fan(px);
     REQUIRE(fan.cut);
-    REQUIRE(int(fan.rays.size()) == SampleFan::kMaxRays);
+    REQUIRE(int(fan.rays.size()) == rc::SampleFan::kMaxRays);
     f.w.setSceneView(true);
-    REQUIRE(int(f.w.sceneView()->sketch().fan.rays.size()) == SampleFan::kMaxRays);
+    REQUIRE(int(f.w.sceneView()->sketch().fan.rays.size()) == rc::SampleFan::kMaxRays);
     f.w.sceneView()->grab();
-    REQUIRE(f.w.sceneView()->caption().contains(QString("the first %1").arg(SampleFan::kMaxRays)));
+    REQUIRE(f.w.sceneView()->caption().contains(QString("the first %1").arg(rc::SampleFan::kMaxRays)));
     ImageView& v = *f.w.imageView();
     // Zoomed about the selected pixel, which stays at the middle of the view (about the
     // corner, what shows depends on where in the image the pixel is)
@@ -174,7 +174,7 @@ TEST_CASE("A fan over the ray limit is cut, and what it draws stays in the view 
                                         std::abs(bottomRight.y())});
         INFO("zoom " << zoom);
         REQUIRE(work.samples > 0);
-        REQUIRE(work.samples <= SampleFan::kMaxRays);
+        REQUIRE(work.samples <= rc::SampleFan::kMaxRays);
         REQUIRE(work.maxCoord <= extent * 1.2 + 2.0);
         // Each segment is clipped to the view with its margin (5% and a pixel a side): at
         // most that rectangle's diagonal, in widget pixels
@@ -187,12 +187,12 @@ TEST_CASE("A fan over the ray limit is cut, and what it draws stays in the view 
 TEST_CASE("The hit-rate heatmap shows hits / (hits + misses) of each pixel's lookups, all its rays", "[gui][heatmap]") {
     SampledWindow f(kSoft, 60000);
     f.w.setHeatmap(Heatmap::HitRate);
-    const SessionState& s = f.state();
-    const TraceRecorder& rec = s.recorder();
+    const rc::SessionState& s = f.state();
+    const rc::TraceRecorder& rec = s.recorder();
     const int n = s.width() * s.height();
     // The pixel's lookups, counted from its recorded events
     std::vector<int> hits(std::size_t(n), 0), misses(std::size_t(n), 0);
-    for (const EventRecord& r : rec.events()) {
+    for (const rc::EventRecord& r : rec.events()) {
         if (r.deferred()) continue;
         hits[std::size_t(r.pixel)] += r.rayDecision() == rc::Decision::Hit ? 1 : 0;
         misses[std::size_t(r.pixel)] += r.rayDecision() == rc::Decision::Miss ? 1 : 0;
@@ -237,7 +237,7 @@ TEST_CASE("The hit-rate heatmap shows hits / (hits + misses) of each pixel's loo
 TEST_CASE("Without a cache the hit-rate heatmap says no lookups, not 0", "[gui][heatmap]") {
     SampledWindow f({"cube:3", "--cache", "none", "--spp", "2", "--light-radius", "0.3", "--shadow-samples", "2"}, 5000);
     f.w.setHeatmap(Heatmap::HitRate);
-    const SessionState& s = f.state();
+    const rc::SessionState& s = f.state();
     const QImage img = HeatmapBuilder::build(s, Heatmap::HitRate);
     int traced = 0;
     for (int px = 0; px < s.width() * s.height(); ++px) {

@@ -9,9 +9,9 @@
 
 #include "main_window.h"
 #include "window_fixture.h"
-#include "ray_focus.h"
+#include "view/ray_focus.h"
 #include "stats_panel.h"
-#include "step_checkpoints.h"
+#include "view/step_checkpoints.h"
 
 using namespace rcgui;
 
@@ -28,7 +28,7 @@ struct Window {
         w.setImageSize(256, 256);
         rcgui::testing::showAt(w, 1000, 800);
     }
-    SessionState& state() { return rcgui::testing::stateOf(w); }
+    rc::SessionState& state() { return rcgui::testing::stateOf(w); }
     void goTo(std::int64_t step) {
         w.goToStep(step);
         w.controller().wait();
@@ -39,14 +39,14 @@ struct Window {
 
 /// What the window shows: image, statistics, the ray in focus, the recorder's tallies.
 void requireSame(Window& a, Window& b) {
-    const SessionState& s = a.state();
-    const SessionState& t = b.state();
+    const rc::SessionState& s = a.state();
+    const rc::SessionState& t = b.state();
     REQUIRE(s.session().steps() == t.session().steps());
     REQUIRE(SessionController::imageOf(s) == SessionController::imageOf(t));
     REQUIRE(s.session().counters() == t.session().counters());
     REQUIRE(a.w.statsPanel()->summaryText() == b.w.statsPanel()->summaryText());
     // The ray in focus
-    const auto f = RayFocus::of(s, a.w.selection()), g = RayFocus::of(t, b.w.selection());
+    const auto f = rc::RayFocus::of(s, a.w.selection()), g = rc::RayFocus::of(t, b.w.selection());
     REQUIRE(f.has_value() == g.has_value());
     if (f) {
         REQUIRE(f->event == g->event);
@@ -59,8 +59,8 @@ void requireSame(Window& a, Window& b) {
         REQUIRE(f->tests == g->tests);
     }
     // The recorder, event by event and pixel by pixel
-    const TraceRecorder& r = s.recorder();
-    const TraceRecorder& q = t.recorder();
+    const rc::TraceRecorder& r = s.recorder();
+    const rc::TraceRecorder& q = t.recorder();
     REQUIRE(r.events().size() == q.events().size());
     REQUIRE(r.misses().size() == q.misses().size());
     int differ = 0;
@@ -140,14 +140,14 @@ TEST_CASE("Step back with a pixel selected keeps the same ray in focus as steppi
     forward.goTo(at - 1);
     forward.w.selectPixel(pixel % 256, pixel / 256);
     forward.w.refresh();
-    REQUIRE(RayFocus::of(back.state(), back.w.selection())->selected);
+    REQUIRE(rc::RayFocus::of(back.state(), back.w.selection())->selected);
     requireSame(back, forward);
 }
 
 TEST_CASE("Checkpoints thin out geometrically behind the render", "[gui][step]") {
-    StepCheckpoints list(1);
+    rc::StepCheckpoints list(1);
     for (std::int64_t m = 0; m <= 1000; ++m) {
-        StepCheckpoint c;
+        rc::StepCheckpoint c;
         c.session.steps = m;
         list.add(std::move(c));
         const std::vector<std::int64_t> kept = list.steps();
@@ -161,7 +161,7 @@ TEST_CASE("Checkpoints thin out geometrically behind the render", "[gui][step]")
             REQUIRE(kept[i] - kept[i - 1] <= std::max<std::int64_t>(1, (m - kept[i - 1]) / 2));
     }
     // Going back drops the later ones
-    const StepCheckpoint* c = list.backTo(700);
+    const rc::StepCheckpoint* c = list.backTo(700);
     REQUIRE(c != nullptr);
     REQUIRE(c->steps() <= 700);
     REQUIRE(c->steps() > 700 - 300 / 2);

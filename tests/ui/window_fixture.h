@@ -5,7 +5,7 @@
 #include <QApplication>
 
 #include "main_window.h"
-#include "session_state.h"
+#include "view/session_state.h"
 
 namespace rcgui::testing {
 
@@ -17,8 +17,8 @@ inline void showAt(MainWindow& w, int width, int height) {
 }
 
 /// The session `w` shows (the test fails if there is none).
-inline SessionState& stateOf(MainWindow& w) {
-    SessionState* s = w.controller().state();
+inline rc::SessionState& stateOf(MainWindow& w) {
+    rc::SessionState* s = w.controller().state();
     REQUIRE(s != nullptr);
     return *s;
 }

@@ -9,9 +9,9 @@
 
 #include "analysis/beam_tree.h"
 #include "render/session_checkpoint.h"
-#include "trace_recorder.h"
+#include "view/trace_recorder.h"
 
-namespace rcgui {
+namespace rc {
 
 /// One checkpoint: the render, its recorder and its beam-tree builder at one step.
 struct StepCheckpoint {
@@ -72,4 +72,4 @@ private:
     std::vector<StepCheckpoint> spares_;  ///< dropped, memory to reuse (at most one kept)
 };
 
-}  // namespace rcgui
+}  // namespace rc

@@ -1,10 +1,10 @@
-#include "step_checkpoints.h"
+#include "view/step_checkpoints.h"
 
 #include <bit>
 #include <cstdio>
 #include <unordered_set>
 
-namespace rcgui {
+namespace rc {
 
 namespace {
 /// Is the checkpoint at spacing `m` still wanted when the newest is at spacing `newest`?
@@ -75,4 +75,4 @@ std::string StepCheckpoints::summary() const {
     return text;
 }
 
-}  // namespace rcgui
+}  // namespace rc

@@ -5,7 +5,7 @@
 
 #include "trace/trace_event.h"
 
-namespace rcgui {
+namespace rc {
 
 /// One traced (or deferred) ray, as the GUI keeps it: 56 bytes instead of the full
 /// event, so a whole render (millions of events) fits in memory. The direction is kept
@@ -41,4 +41,4 @@ struct EventRecord {
     static EventRecord from(const rc::TraceEvent& e, int region, int previous);
 };
 
-}  // namespace rcgui
+}  // namespace rc

@@ -1,9 +1,9 @@
-#include "session_state.h"
+#include "view/session_state.h"
 
 #include <algorithm>
 #include <chrono>
 
-namespace rcgui {
+namespace rc {
 
 namespace {
 std::unique_ptr<rc::RenderSession> makeSession(const SessionConfig& c) {
@@ -96,7 +96,8 @@ bool SessionState::runUntil(RunGoal goal, std::int64_t target, const std::atomic
             for (std::size_t i = eventsBefore; i < events.size(); ++i) {
                 const bool met = goal == RunGoal::NextDeferral
                                      ? events[i].deferred()
-                                     : !events[i].deferred() && events[i].rayDecision() == rc::Decision::Miss;
+                                     : !events[i].deferred() && events[i].rayDecision() == rc::Decision::Miss &&
+                                           (missFilter_ == rc::MissReason::None || events[i].missReason() == missFilter_);
                 if (met) {
                     stopEvent_ = int(i);
                     return true;
@@ -113,4 +114,4 @@ bool SessionState::runUntil(RunGoal goal, std::int64_t target, const std::atomic
     }
 }
 
-}  // namespace rcgui
+}  // namespace rc

@@ -1,9 +1,9 @@
-#include "trace_recorder.h"
+#include "view/trace_recorder.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace rcgui {
+namespace rc {
 
 TraceRecorder::TraceRecorder(int width, int height, const rc::RayOrder* order)
     : width_(width), height_(height), order_(order) {
@@ -90,4 +90,4 @@ void TraceRecorder::rollback(const Mark& m) {
     sampleEvery_ = m.sampleEvery;
 }
 
-}  // namespace rcgui
+}  // namespace rc

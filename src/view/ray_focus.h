@@ -4,10 +4,10 @@
 #include <optional>
 #include <vector>
 
-#include "event_record.h"
-#include "session_state.h"
+#include "view/event_record.h"
+#include "view/session_state.h"
 
-namespace rcgui {
+namespace rc {
 
 /// What is selected in the window.
 struct Selection {
@@ -55,7 +55,11 @@ struct FocusHull {
     int origin = -1, target = -1;  ///< blocker-list sites (-1: none, e.g. a ray that hit nothing)
     rc::Sphere a, b;               ///< their spheres
     int targetObject = -1;         ///< the object the target site stands for (-1: a light)
-    std::vector<int> blockers;     ///< the listed potential blockers (empty: none or not built)
+    std::vector<int> blockers;     ///< the nearest listed potential blockers, nearest first (at most kShown)
+    std::size_t listed = 0;        ///< how many the list holds (blockers.size() when all are kept)
+    /// Blockers kept for drawing: an overlay costs what the eye can take in, not what the
+    /// list holds (the ground polygon of SPD's balls can list the whole scene).
+    static constexpr std::size_t kShown = 60;
     rc::Vec3 coneAxis{0, 0, 1};    ///< an eye ray that hit nothing: the empty cone's axis
     double coneAngle = -1.0;       ///< ... and its half angle (< 0: none)
     bool valid() const { return origin >= 0 && target >= 0; }
@@ -82,4 +86,4 @@ rc::SafetyCylinder cylinderAround(const rc::Scene& scene, const RayFocus& f);
 /// as the blocker cache builds it for an eye ray that hits nothing (< 0: none).
 double emptyConeAround(const rc::Scene& scene, const RayFocus& f);
 
-}  // namespace rcgui
+}  // namespace rc

@@ -1,4 +1,4 @@
-#include "sample_fan.h"
+#include "view/sample_fan.h"
 
 #include <algorithm>
 
@@ -6,7 +6,7 @@
 #include "search/accelerator.h"
 #include "trace/image_accumulator.h"
 
-namespace rcgui {
+namespace rc {
 
 int SampleFan::count(FanOutcome o) const {
     return int(std::count_if(rays.begin(), rays.end(), [o](const FanRay& r) { return r.outcome == o; }));
@@ -91,4 +91,4 @@ SampleFan SampleFan::trace(const rc::RenderSession& session, int pixel, int maxR
     return fan;
 }
 
-}  // namespace rcgui
+}  // namespace rc

@@ -7,12 +7,12 @@
 
 #include "analysis/beam_tree.h"
 #include "render/render_session.h"
-#include "sample_fan.h"
+#include "view/sample_fan.h"
 #include "scene/camera.h"
-#include "step_checkpoints.h"
-#include "trace_recorder.h"
+#include "view/step_checkpoints.h"
+#include "view/trace_recorder.h"
 
-namespace rcgui {
+namespace rc {
 
 /// What a render is made of: the scene and the options (cache, order, size).
 struct SessionConfig {
@@ -57,6 +57,9 @@ public:
 
     /// The recorded event that met the last run's NextMiss/NextDeferral goal, else -1.
     int stopEvent() const { return stopEvent_; }
+    /// Next miss stops only at misses of this reason (rc::MissReason::None: at any miss).
+    void setMissFilter(rc::MissReason r) { missFilter_ = r; }
+    rc::MissReason missFilter() const { return missFilter_; }
 
     const SessionConfig& config() const { return config_; }
     const rc::Scene& scene() const { return *config_.scene; }
@@ -77,6 +80,7 @@ public:
 private:
     std::uint64_t serial_;
     int stopEvent_ = -1;
+    rc::MissReason missFilter_ = rc::MissReason::None;
     void sample();
     void checkpoint();
     SessionConfig config_;
@@ -88,4 +92,4 @@ private:
     StepCheckpoints checkpoints_;
 };
 
-}  // namespace rcgui
+}  // namespace rc

@@ -1,9 +1,9 @@
-#include "event_record.h"
+#include "view/event_record.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace rcgui {
+namespace rc {
 
 namespace {
 // Octahedral encoding of unit vectors (Cigolle et al. 2014): the sphere folded onto a square
@@ -54,6 +54,6 @@ EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous)
     return r;
 }
 
-}  // namespace rcgui
+}  // namespace rc
 
-static_assert(sizeof(rcgui::EventRecord) == 56, "an event record is 56 bytes");
+static_assert(sizeof(rc::EventRecord) == 56, "an event record is 56 bytes");

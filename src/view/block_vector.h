@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-namespace rcgui {
+namespace rc {
 
 /// Append-only storage of `T` in blocks of `kBlock` elements (cut back only by truncate()).
 template <class T, std::size_t kBlock = 8192>
@@ -57,4 +57,4 @@ private:
     std::size_t size_ = 0;
 };
 
-}  // namespace rcgui
+}  // namespace rc

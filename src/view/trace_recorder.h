@@ -5,11 +5,11 @@
 #include <optional>
 #include <vector>
 
-#include "block_vector.h"
-#include "event_record.h"
+#include "view/block_vector.h"
+#include "view/event_record.h"
 #include "order/ray_order.h"
 
-namespace rcgui {
+namespace rc {
 
 /// Counters sampled over time, for the statistics chart.
 struct StatSample {
@@ -89,4 +89,4 @@ private:
     std::int64_t sampleEvery_ = 1;
 };
 
-}  // namespace rcgui
+}  // namespace rc

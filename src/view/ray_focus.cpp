@@ -1,4 +1,4 @@
-#include "ray_focus.h"
+#include "view/ray_focus.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "geometry/intersection.h"
 
-namespace rcgui {
+namespace rc {
 
 rc::Vec3 RayFocus::segmentEnd(const rc::Scene& scene) const {
     if (hit >= 0 && t >= 0.0) return ray.at(t);
@@ -137,6 +137,23 @@ FocusHull hullOf(const SessionState& s, const RayFocus& f) {
     if (const std::vector<int>* blockers = lists->find(h.origin, h.target))
         for (int id : *blockers)
             if (id >= 0 && id < s.scene().size()) h.blockers.push_back(id);
+    h.listed = h.blockers.size();
+    // Keep the blockers nearest the segment between origin and target, nearest first
+    const rc::Scene& scene = s.scene();
+    const rc::Vec3 a = h.a.c, ab = h.b.c - h.a.c;
+    const double abab = glm::dot(ab, ab);
+    auto gap = [&](int id) {
+        const rc::Sphere& b = scene.objects[std::size_t(id)].bound;
+        const double u = abab > 0.0 ? std::clamp(glm::dot(b.c - a, ab) / abab, 0.0, 1.0) : 0.0;
+        return glm::length(b.c - (a + u * ab)) - b.r;
+    };
+    auto nearer = [&](int x, int y) {
+        const double gx = gap(x), gy = gap(y);
+        return gx < gy || (gx == gy && x < y);
+    };
+    const std::size_t keep = std::min(h.blockers.size(), FocusHull::kShown);
+    std::partial_sort(h.blockers.begin(), h.blockers.begin() + std::ptrdiff_t(keep), h.blockers.end(), nearer);
+    h.blockers.resize(keep);
     return h;
 }
 
@@ -154,4 +171,4 @@ FocusCylinder cylinderOf(const SessionState& s, const RayFocus& f) {
     return c;
 }
 
-}  // namespace rcgui
+}  // namespace rc

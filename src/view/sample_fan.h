@@ -8,7 +8,7 @@
 #include "geometry/sphere.h"
 #include "render/render_session.h"
 
-namespace rcgui {
+namespace rc {
 
 /// What became of one sample ray.
 enum class FanOutcome {
@@ -59,4 +59,4 @@ struct SampleFan {
     static SampleFan trace(const rc::RenderSession& session, int pixel, int maxRays = kMaxRays);
 };
 
-}  // namespace rcgui
+}  // namespace rc

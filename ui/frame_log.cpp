@@ -1,0 +1,61 @@
+#include "frame_log.h"
+
+#include <QEvent>
+#include <QMetaEnum>
+#include <QThread>
+#include <QWidget>
+
+namespace rcgui {
+
+FrameLog& FrameLog::instance() {
+    static FrameLog log;
+    return log;
+}
+
+bool FrameLog::open(const QString& file) {
+    file_.setFileName(file);
+    return file_.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text);
+}
+
+void FrameLog::record(const QString& name, double milliseconds) {
+    if (!file_.isOpen()) return;
+    file_.write(QString("%1 %2\n").arg(name).arg(milliseconds, 0, 'f', 3).toUtf8());
+    file_.flush();
+    ++lines_;
+}
+
+double FrameLog::sinceStart() {
+    static QElapsedTimer start = [] {
+        QElapsedTimer t;
+        t.start();
+        return t;
+    }();
+    return double(start.nsecsElapsed()) * 1e-6;
+}
+
+bool TimedApplication::notify(QObject* receiver, QEvent* event) {
+    FrameLog& log = FrameLog::instance();
+    if (!log.enabled() || QThread::currentThread() != thread()) return QApplication::notify(receiver, event);
+    if (event->type() == QEvent::Paint && receiver && receiver->isWidgetType()) paintSeen_ = true;
+    if (depth_ > 0) return QApplication::notify(receiver, event);
+    // An outermost event of the UI thread: one task (the events it sends are part of it)
+    // Named before it is delivered: a DeferredDelete deletes its receiver (and the event)
+    const char* type = QMetaEnum::fromType<QEvent::Type>().valueToKey(event->type());
+    const int typeNumber = int(event->type());
+    const char* cls = receiver ? receiver->metaObject()->className() : "none";
+    QElapsedTimer timer;
+    timer.start();
+    ++depth_;
+    const bool handled = QApplication::notify(receiver, event);
+    --depth_;
+    const double ms = double(timer.nsecsElapsed()) * 1e-6;
+    log.record(QString("%1:%2").arg(type ? QString(type) : QString::number(typeNumber), QString(cls)), ms);
+    // The first window painted: how long the user waited for it
+    if (!firstFrame_ && paintSeen_) {
+        firstFrame_ = true;
+        log.record("first-frame", FrameLog::sinceStart());
+    }
+    return handled;
+}
+
+}  // namespace rcgui
