@@ -39,10 +39,16 @@ void ImageView::fit() {
     fitted_ = true;
     focus_ = QRectF();
     if (image_.isNull() || width() <= 0 || height() <= 0) return;
-    zoom_ = std::min(double(width()) / image_.width(), double(height()) / image_.height());
-    pan_ = QPointF((width() - zoom_ * image_.width()) / 2, (height() - zoom_ * image_.height()) / 2);
+    const double usable = std::max(50.0, width() - reserve_);
+    zoom_ = std::min(usable / image_.width(), double(height()) / image_.height());
+    pan_ = QPointF((usable - zoom_ * image_.width()) / 2, (height() - zoom_ * image_.height()) / 2);
     update();
     emit viewMoved();
+}
+
+void ImageView::setReserve(double pixels) {
+    reserve_ = std::max(0.0, pixels);
+    if (fitted_) refit();
 }
 
 void ImageView::fitRect(const QRectF& r) {
@@ -50,8 +56,9 @@ void ImageView::fitRect(const QRectF& r) {
     fitted_ = true;
     focus_ = r;
     if (width() <= 0 || height() <= 0) return;
-    zoom_ = std::clamp(std::min(double(width()) / r.width(), double(height()) / r.height()), 0.05, 200.0);
-    pan_ = QPointF(width() / 2.0, height() / 2.0) - zoom_ * r.center();
+    const double usable = std::max(50.0, width() - reserve_);
+    zoom_ = std::clamp(std::min(usable / r.width(), double(height()) / r.height()), 0.05, 200.0);
+    pan_ = QPointF(usable / 2.0, height() / 2.0) - zoom_ * r.center();
     update();
     emit viewMoved();
 }
@@ -146,7 +153,9 @@ bool ImageView::event(QEvent* e) {
 
 void ImageView::mouseReleaseEvent(QMouseEvent* e) {
     if (e->button() == Qt::LeftButton && !dragging_) {
+        // A click on a pixel selects it; outside the image, it lets the selection go
         if (auto px = pixelAt(e->position())) emit pixelClicked(px->x(), px->y());
+        else emit cleared();
     }
     dragging_ = false;
 }

@@ -44,6 +44,9 @@ public:
     /// Fits image rectangle `r` (pixels) to the view, centred; it stays fitted as the view
     /// is resized, until the user zooms or pans. An empty `r` fits the whole image.
     void fitRect(const QRectF& r);
+    /// Pixels kept free at the right when fitting: room for the key beside the image.
+    void setReserve(double pixels);
+    double reserve() const { return reserve_; }
 
     QPointF imageToWidget(const QPointF& p) const { return pan_ + zoom_ * p; }
     QPointF widgetToImage(const QPointF& w) const { return (w - pan_) / zoom_; }
@@ -77,6 +80,7 @@ private:
     QPointF pan_{0, 0};
     bool fitted_ = false;  ///< follows the widget's size until the user zooms or pans
     QRectF focus_;         ///< the rectangle fitted (empty: the whole image)
+    double reserve_ = 0.0; ///< see setReserve()
     void refit();
     bool grid_ = true;
     bool dragging_ = false;

@@ -93,6 +93,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             const QRectF image(compareView_->imageToWidget(QPointF(0, 0)),
                                compareView_->imageToWidget(QPointF(compareView_->image().width(), compareView_->image().height())));
             comparePainter_.paintLegend(p, *c, overlays_, compareSelection(), area, image);
+            keepLegendBeside(compareView_, comparePainter_);
         }
     });
     compareView_->setTooltipHook([this](int x, int y) { return pixelTooltip(compare_.state(), x, y); });
@@ -124,6 +125,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             const QRectF image(view_->imageToWidget(QPointF(0, 0)),
                                view_->imageToWidget(QPointF(view_->image().width(), view_->image().height())));
             overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, image);
+            keepLegendBeside(view_, overlayPainter_);
         }
     });
     view_->setTooltipHook([this](int x, int y) { return pixelTooltip(controller_.state(), x, y); });
@@ -164,6 +166,20 @@ MainWindow::~MainWindow() {
     compare_.cancel();
     controller_.wait();
     compare_.wait();
+}
+
+void MainWindow::keepLegendBeside(ImageView* view, const OverlayPainter& painter) {
+    // The caption and key go beside the fitted image, never over it: the view keeps room
+    // for them (at most half its width; a wider key takes a smaller font)
+    const double want = std::min(painter.legendWidth(), 0.5 * view->width());
+    if (std::abs(want - view->reserve()) > 8.0)
+        QTimer::singleShot(0, view, [view, want] { view->setReserve(want); });
+}
+
+QLabel* MainWindow::toolbarLabel(const QString& text) {
+    auto* l = new QLabel(" " + text + " ", this);
+    l->setObjectName("toolbarLabel");
+    return l;
 }
 
 QString pixelTooltip(const rc::SessionState* s, int x, int y) {
@@ -341,7 +357,8 @@ void MainWindow::buildToolbars() {
     QToolBar* render = addToolBar("Render");
     render->setObjectName("render");
     sceneBox_ = new QComboBox(this);
-    sceneBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    sceneBox_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    sceneBox_->setMinimumContentsLength(10);
     // Built-ins (cube:N and balls:N in the sizes the core suggests), then every scene of the
     // project's scenes/ folder
     for (const rc::BuiltinInfo& b : rc::builtinScenes()) {
@@ -365,7 +382,7 @@ void MainWindow::buildToolbars() {
         sceneBox_->setItemData(sceneBox_->count() - 1, f.absoluteFilePath(), Qt::ToolTipRole);
     }
     sceneBox_->setToolTip("Scene: built-ins, or files opened with Open…");
-    render->addWidget(new QLabel(" Scene ", this));
+    render->addWidget(toolbarLabel("Scene"));
     render->addWidget(sceneBox_);
     openAct_ = render->addAction("Open…", this, &MainWindow::openSceneDialog);
     openAct_->setShortcut(QKeySequence::Open);
@@ -376,7 +393,7 @@ void MainWindow::buildToolbars() {
     // Every cache, RayCache's blocker+ and blocker+dir beside the paper's two
     for (auto k : rc::allCacheKinds()) cacheBox_->addItem(text(rc::toString(k)), int(k));
     cacheBox_->setCurrentIndex(cacheBox_->findData(int(rc::CacheKind::Blocker)));
-    render->addWidget(new QLabel(" Cache ", this));
+    render->addWidget(toolbarLabel("Cache"));
     render->addWidget(cacheBox_);
     connect(cacheBox_, &QComboBox::activated, this, [this](int i) { setCache(rc::CacheKind(cacheBox_->itemData(i).toInt())); });
 
@@ -386,7 +403,7 @@ void MainWindow::buildToolbars() {
         orderBox_->addItem(text(rc::toString(k)), int(k));
     orderBox_->setCurrentIndex(2);
     orderBox_->setToolTip("progressive: all eye rays first, then deeper rays (the paper's conclusion)");
-    render->addWidget(new QLabel(" Order ", this));
+    render->addWidget(toolbarLabel("Order"));
     render->addWidget(orderBox_);
     connect(orderBox_, &QComboBox::activated, this, [this](int i) { setOrder(rc::OrderKind(orderBox_->itemData(i).toInt())); });
 
@@ -395,7 +412,7 @@ void MainWindow::buildToolbars() {
     for (auto k : {rc::AccelKind::Linear, rc::AccelKind::Grid, rc::AccelKind::Bvh})
         accelBox_->addItem(text(rc::toString(k)), int(k));
     accelBox_->setToolTip("What answers the complete searches: a linear scan, a uniform grid or a BVH");
-    render->addWidget(new QLabel(" Search ", this));
+    render->addWidget(toolbarLabel("Search"));
     render->addWidget(accelBox_);
     connect(accelBox_, &QComboBox::activated, this, [this](int i) { setAccel(rc::AccelKind(accelBox_->itemData(i).toInt())); });
 
@@ -403,20 +420,21 @@ void MainWindow::buildToolbars() {
     sizeBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     sizeBox_->addItem("scene's", 0);
     for (int n : {32, 64, 128, 256, 512, 1024}) sizeBox_->addItem(QString::number(n), n);
-    render->addWidget(new QLabel(" Size ", this));
+    render->addWidget(toolbarLabel("Size"));
     render->addWidget(sizeBox_);
     connect(sizeBox_, &QComboBox::activated, this, [this](int i) {
         sizeChoice_ = sizeBox_->itemData(i).toInt();
         resetSession();
     });
     compareBox_ = new QComboBox(this);
-    compareBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    compareBox_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    compareBox_->setMinimumContentsLength(12);
     compareBox_->addItem("off", "off");
     for (auto c : rc::allCacheKinds())
         for (auto o : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
             compareBox_->addItem(toString(CompareChoice{c, o}), toString(CompareChoice{c, o}));
     compareBox_->setToolTip("Compare: run a second render with another cache and order beside this one, in lockstep");
-    render->addWidget(new QLabel(" Compare ", this));
+    render->addWidget(toolbarLabel("Compare"));
     render->addWidget(compareBox_);
     connect(compareBox_, &QComboBox::activated, this, [this](int i) {
         QString why;
@@ -507,7 +525,7 @@ void MainWindow::buildToolbars() {
     heatmapBox_->addItem("cache hit rate", int(Heatmap::HitRate));
     heatmapBox_->addItem("visiting order", int(Heatmap::VisitOrder));
     heatmapBox_->addItem("beam-tree node", int(Heatmap::BeamNode));
-    show->addWidget(new QLabel(" Show ", this));
+    show->addWidget(toolbarLabel("Show"));
     show->addWidget(heatmapBox_);
     connect(heatmapBox_, &QComboBox::activated, this, [this](int i) { setHeatmap(Heatmap(heatmapBox_->itemData(i).toInt())); });
     QAction* large = show->addAction("Large fonts");
@@ -766,6 +784,10 @@ void MainWindow::setLargeFonts(bool on) {
     f.setPointSizeF(on ? 16.0 : 10.0);
     QApplication::setFont(f);
     for (QWidget* w : findChildren<QWidget*>()) w->setFont(f);
+    // The toolbars' labels stay small: on a projector the boxes they name must fit a row
+    QFont label = f;
+    label.setPointSizeF(on ? 11.0 : 10.0);
+    for (QLabel* l : findChildren<QLabel*>("toolbarLabel")) l->setFont(label);
     view_->setFont(f);
     view_->update();
 }
@@ -800,8 +822,7 @@ void MainWindow::selectObject(int object) {
 }
 
 void MainWindow::stepRay() { controller_.stepRay(); }
-void MainWindow::stepPixel() { controller_.start(rc::RunGoal::NextPixel); }
-void MainWindow::runToNextMiss() {
+void MainWindow::stepPixel() { controller_.start(rc::RunGoal::NextPixel); }void MainWindow::runToNextMiss() {
     if (rc::SessionState* s = controller_.state()) s->setMissFilter(missFilter_);
     controller_.start(rc::RunGoal::NextMiss);
 }

@@ -172,10 +172,14 @@ protected:
 private:
     void buildToolbars();
     void buildTourBar();
+    /// A label naming a toolbar box.
+    QLabel* toolbarLabel(const QString& text);
     /// The rest of apply(), once its rays are traced.
     bool finishApply(const GuiOptions& o, bool wait);
     /// Zoom and focus rectangle of `o` on the views (fitted when it gives neither).
     void frameViews(const GuiOptions& o);
+    /// Keeps room beside `view`'s image for the caption and key `painter` last drew.
+    void keepLegendBeside(ImageView* view, const OverlayPainter& painter);
     void buildDocks();
     void onBusyChanged(bool busy);
     void onPlayTick();

@@ -1,5 +1,7 @@
 #include "overlay_painter.h"
 
+#include "view/miss_cause.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -97,6 +99,18 @@ void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlay
         outline(p, QPolygonF(QRectF(c.x() - half, c.y() - half, 2 * half, 2 * half)), palette::kSelection,
                 2.5 * lineScale_);
     }
+    // With a selection in focus, a cross still marks the pixel being traced, so that
+    // stepping shows on the image
+    const auto& last = s.recorder().lastEvent();
+    if ((sel.pixel >= 0 || sel.event >= 0) && last && !s.session().done()) {
+        const QPointF c = pixelCentre(last->task.pixel, s.width());
+        const double r = std::max(0.7, 9.0 * lineScale_ / scale);
+        for (const auto& [colour, width] : {std::pair{QColor(Qt::black), 4.5}, std::pair{palette::kRay, 2.0}}) {
+            p.setPen(cosmetic(colour, width * lineScale_));
+            p.drawLine(c - QPointF(r, 0), c + QPointF(r, 0));
+            p.drawLine(c - QPointF(0, r), c + QPointF(0, r));
+        }
+    }
     // The queue on top of everything: it is small and it is where the action is
     if (o.frontier) paintFrontier(p, s, scale, true);
 }
@@ -106,6 +120,7 @@ void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Pr
     if (o.hull) paintHull(p, s, proj, f);
     if (o.cylinder) paintCylinder(p, s, proj, f);
     if (!(o.hull || o.cylinder)) return;
+    paintMissCause(p, s, proj, f);
     // The ray itself: from its origin to the end of its segment, and its pixel
     if (auto l = proj.segment(f.ray.o, f.segmentEnd(s.scene())); l && l->length() > 0.5)
         line(p, *l, palette::kRay, 2.5 * lineScale_);
@@ -115,6 +130,21 @@ void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Pr
     const QTransform t = p.transform();
     const double r = 5.0 / std::max(1e-9, std::sqrt(std::abs(t.determinant())));
     p.drawEllipse(c, r, r);
+}
+
+void OverlayPainter::paintMissCause(QPainter& p, const rc::SessionState& s, const Projector& proj,
+                                    const rc::RayFocus& f) {
+    // A miss: what the entry held that this ray did not keep to
+    const rc::MissCause c = rc::missCauseOf(s, f);
+    if (!c.valid()) return;
+    if (c.cylinder.radius > 0.0) {
+        const QPolygonF shape = proj.hull({c.cylinder.a, c.cylinder.radius}, {c.cylinder.b, c.cylinder.radius});
+        outline(p, shape, palette::kMissCause, 2.5 * lineScale_, Qt::DashLine, withAlpha(palette::kMissCause, 40), &work_,
+                proj.covers(shape));
+    }
+    if (c.reason == rc::MissReason::TargetMissed || c.reason == rc::MissReason::BlockerHit)
+        paintObject(p, s, proj, c.cachedObject, palette::kMissCause, withAlpha(palette::kMissCause, 50), 3.5);
+    if (c.blocker >= 0) paintObject(p, s, proj, c.blocker, palette::kBlocker, withAlpha(palette::kBlocker, 120), 4.0);
 }
 
 void OverlayPainter::paintCylinder(QPainter& p, const rc::SessionState& s, const Projector& proj,
@@ -421,8 +451,25 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         if (fan.notCast > 0)
             keys.push_back({Qt::transparent, QString("no ray to %1 light points (behind the surface)").arg(fan.notCast)});
     }
+    // A miss in focus: what caused it, in words and in red
+    if (focus && (o.hull || o.cylinder)) {
+        const rc::MissCause c = rc::missCauseOf(s, *focus);
+        const QString was = c.cachedObject >= 0 ? QString("#%1").arg(c.cachedObject) : QString("nothing");
+        if (c.reason == rc::MissReason::TargetMissed)
+            keys.push_back({palette::kMissCause, QString("miss: the cached target %1 is not hit").arg(was)});
+        else if (c.reason == rc::MissReason::BlockerHit)
+            keys.push_back({palette::kMissCause, QString("miss: blocker #%1 is hit before the cached %2").arg(c.blocker).arg(was)});
+        else if (c.reason == rc::MissReason::LeftCylinder && c.cylinder.radius > 0.0)
+            keys.push_back({palette::kMissCause, QString("miss: the ray leaves the cached cylinder (r %1, cached %2)")
+                                                     .arg(c.cylinder.radius, 0, 'g', 3).arg(was)});
+        else if (c.valid())
+            keys.push_back({palette::kMissCause, QString("miss (%1); the entry held %2")
+                                                     .arg(QString::fromUtf8(rc::toString(c.reason).data()), was)});
+    }
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
+    if (const auto& last = s.recorder().lastEvent(); (sel.pixel >= 0 || sel.event >= 0) && last && !session.done())
+        keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
 
     if (!o.legend || !keysShown_) keys.clear();
     // A key that would cover much of the image gets a smaller font (untick Legend to hide it)
@@ -433,19 +480,6 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         const double f = std::max(0.6, 0.55 * area.height() / (rows * (QFontMetricsF(small).height() + 2)));
         small.setPointSizeF(small.pointSizeF() * f);
         p.setFont(small);
-    }
-    {
-        // A caption or key wider than the view takes a smaller font rather than be cut off
-        double widest = 0;
-        for (const QString& c : caption) widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(c));
-        for (const auto& k : keys)
-            widest = std::max(widest, QFontMetricsF(p.font()).horizontalAdvance(k.second) +
-                                          1.3 * QFontMetricsF(p.font()).height());
-        if (widest + 32 > area.width() && widest > 0) {
-            QFont small = p.font();
-            small.setPointSizeF(small.pointSizeF() * std::max(0.6, (area.width() - 32) / widest));
-            p.setFont(small);
-        }
     }
     const QFontMetricsF fm(p.font());
     const double lh = fm.height() + 2;
@@ -470,11 +504,23 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         // Room for five labels apart
         kw = std::max({kw, 220.0, 7.0 * fm.horizontalAdvance("100.0"), fm.horizontalAdvance(barTitle) + 16});
     }
-    const double barHeight = bar ? lh * 3.2 : 0.0;
-    const double keyHeight = lh * double(keys.size()) + 8 + barHeight;
-    // Beside the image when a margin has room, else over it (caption top left, key bottom left)
+    legendWidth_ = std::max(cw, kw) + 32;
+    // Lines longer than the room beside the image (or the view) wrap
     const double leftRoom = image.left() - area.left(), rightRoom = area.right() - image.right();
-    QRectF capBox(area.left() + 8, area.top() + 8, cw + 16, lh * caption.size() + 8);
+    const double beside = std::max(leftRoom, rightRoom);
+    const double widest = (beside >= 0.3 * area.width() ? beside : area.width()) - 32;
+    cw = std::min(cw, widest);
+    kw = std::min(kw, widest);
+    auto height = [&](const QString& text, double width) {
+        return std::max(lh, fm.boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, text).height() + 2);
+    };
+    double capHeight = 8, keyHeight = 8;
+    for (const QString& c : caption) capHeight += height(c, cw);
+    for (const auto& k : keys) keyHeight += height(k.second, kw - lh * 1.3);
+    const double barHeight = bar ? lh * 3.2 : 0.0;
+    keyHeight += barHeight;
+    // Beside the image when a margin has room, else over it (caption top left, key bottom left)
+    QRectF capBox(area.left() + 8, area.top() + 8, cw + 16, capHeight);
     QRectF keyBox(area.left() + 8, area.bottom() - 8 - keyHeight, kw + 16, keyHeight);
     if (rightRoom >= kw + 32) {
         keyBox.moveTopLeft(QPointF(image.right() + 8, std::max(area.top() + 8, image.top())));
@@ -491,8 +537,9 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     p.setPen(Qt::white);
     double y = capBox.top() + 4;
     for (const QString& c : caption) {
-        p.drawText(QRectF(capBox.left() + 8, y, cw, lh), Qt::AlignVCenter | Qt::AlignLeft, c);
-        y += lh;
+        const double h = height(c, cw);
+        p.drawText(QRectF(capBox.left() + 8, y, cw, h), Qt::AlignVCenter | Qt::AlignLeft | Qt::TextWordWrap, c);
+        y += h;
     }
     legendKey_ = QRectF();
     if (keys.empty() && !bar) return;
@@ -507,9 +554,11 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
             p.setBrush(colour);
             p.drawRect(QRectF(keyBox.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
         }
+        const double h = height(text, kw - lh * 1.3);
         p.setPen(Qt::white);
-        p.drawText(QRectF(keyBox.left() + 8 + lh * 1.3, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft, text);
-        y += lh;
+        p.drawText(QRectF(keyBox.left() + 8 + lh * 1.3, y, kw - lh * 1.3, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap,
+                   text);
+        y += h;
     }
     if (!bar) return;
     p.setPen(Qt::white);

@@ -51,11 +51,14 @@ public:
     void setKeysShown(bool on) { keysShown_ = on; }
     /// Where the last key was drawn (widget coordinates; empty: none).
     const QRectF& legendKey() const { return legendKey_; }
+    /// The width the last caption and key wanted beside the image (widget pixels).
+    double legendWidth() const { return legendWidth_; }
 
 private:
     void paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f,
                     const Overlays& o);
     void paintCylinder(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
+    void paintMissCause(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
     void paintHull(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
     void paintObject(QPainter& p, const rc::SessionState& s, const Projector& proj, int object,
                      const QColor& line, const QColor& fill, double width);
@@ -74,6 +77,7 @@ private:
     QStringList extraCaption_;
     bool keysShown_ = true;
     QRectF legendKey_;
+    double legendWidth_ = 0.0;
     double lineScale_ = 1.0;
     std::uint64_t cachedState_ = 0;  ///< rc::SessionState::serial() of the cached layer
     std::size_t cachedEvents_ = 0;

@@ -51,6 +51,9 @@ int renderScreenshot(const GuiOptions& o, QTextStream& out, QTextStream& err, co
         return 2;
     }
     w.resize(opts.window);
+    // A first paint places the caption and key, and the view makes room for them
+    QApplication::processEvents();
+    w.grab();
     QApplication::processEvents();
     const QPixmap shot = w.grab();
     if (shot.isNull() || !shot.save(opts.screenshot, "PNG")) {
