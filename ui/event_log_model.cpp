@@ -7,9 +7,27 @@
 
 namespace rcgui {
 
+int EventLogModel::rowsOf(const rc::SessionState* state) {
+    if (!state) return 0;
+    const rc::TraceRecorder& rec = state->recorder();
+    if (reason_ == rc::MissReason::None) return int(missesOnly_ ? rec.misses().size() : rec.events().size());
+    // Misses of one reason: found among the misses once, as the log grows
+    if (state != state_ || missesScanned_ > rec.misses().size()) {
+        ofReason_.clear();
+        missesScanned_ = 0;
+    }
+    for (; missesScanned_ < rec.misses().size(); ++missesScanned_) {
+        const std::int32_t i = rec.misses()[missesScanned_];
+        const rc::EventRecord& r = rec.events()[std::size_t(i)];
+        if (!r.deferred() && r.missReason() == reason_) ofReason_.push_back(i);
+    }
+    return int(ofReason_.size());
+}
+
 void EventLogModel::setState(const rc::SessionState* state) {
-    const int rows = !state ? 0 : int(missesOnly_ ? state->recorder().misses().size() : state->recorder().events().size());
-    if (state == state_ && rows >= rows_) {
+    const bool same = state == state_;
+    const int rows = rowsOf(state);
+    if (same && rows >= rows_) {
         // The log only grows: announce the new rows
         if (rows > rows_) {
             beginInsertRows({}, rows_, rows - 1);
@@ -32,8 +50,17 @@ void EventLogModel::setMissesOnly(bool on) {
     setState(s);
 }
 
+void EventLogModel::setReason(rc::MissReason r) {
+    if (r == reason_) return;
+    const rc::SessionState* s = state_;
+    reason_ = r;
+    state_ = nullptr;
+    setState(s);
+}
+
 int EventLogModel::eventAt(int row) const {
     if (!state_ || row < 0 || row >= rows_) return -1;
+    if (reason_ != rc::MissReason::None) return ofReason_[std::size_t(row)];
     return missesOnly_ ? state_->recorder().misses()[row] : row;
 }
 
@@ -42,7 +69,7 @@ int EventLogModel::columnCount(const QModelIndex& parent) const { return parent.
 
 QVariant EventLogModel::headerData(int section, Qt::Orientation o, int role) const {
     if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
-    static const char* names[] = {"step", "pixel", "path", "kind", "hit", "decision", "tests"};
+    static const char* names[] = {"step", "pixel", "path", "kind", "hit", "tests", "decision"};
     return QString(names[section]);
 }
 
@@ -50,10 +77,11 @@ QVariant EventLogModel::data(const QModelIndex& index, int role) const {
     const int i = eventAt(index.row());
     if (i < 0) return {};
     const rc::EventRecord& r = state_->recorder().events()[i];
-    if (role == Qt::ForegroundRole && index.column() == 5) {
+    if (role == Qt::ForegroundRole && index.column() == 6) {
         if (r.deferred() || r.rayDecision() == rc::Decision::Miss) return palette::missReason(r.missReason()).darker(130);
         return {};
     }
+    if (role == Qt::ToolTipRole && index.column() == 6) return decisionText(r);
     if (role != Qt::DisplayRole) return {};
     const int w = state_->width();
     switch (index.column()) {
@@ -62,8 +90,8 @@ QVariant EventLogModel::data(const QModelIndex& index, int role) const {
         case 2: return QString::fromStdString(state_->session().cacheTree().label(r.node));
         case 3: return text(rc::toString(r.rayKind()));
         case 4: return r.deferred() ? QString("?") : objectLabel(state_->scene(), r.hit);
-        case 5: return decisionText(r);
-        case 6: return r.tests;
+        case 5: return r.tests;
+        case 6: return decisionText(r);
     }
     return {};
 }

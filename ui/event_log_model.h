@@ -1,6 +1,9 @@
 #pragma once
 /// \file
-/// \brief A table model over the recorded trace events, optionally only the misses.
+/// \brief A table model over the recorded trace events, optionally only the misses, or
+/// only the misses of one reason.
+#include <vector>
+
 #include <QAbstractTableModel>
 
 #include "view/session_state.h"
@@ -17,6 +20,9 @@ public:
     void setState(const rc::SessionState* state);
     void setMissesOnly(bool on);
     bool missesOnly() const { return missesOnly_; }
+    /// Only the committed misses of reason `r` (rc::MissReason::None: no such filter).
+    void setReason(rc::MissReason r);
+    rc::MissReason reason() const { return reason_; }
     /// The recorder index of a row's event.
     int eventAt(int row) const;
 
@@ -28,7 +34,12 @@ public:
 private:
     const rc::SessionState* state_ = nullptr;
     bool missesOnly_ = false;
+    rc::MissReason reason_ = rc::MissReason::None;
+    std::vector<std::int32_t> ofReason_;  ///< with a reason: the events shown, in order
+    std::size_t missesScanned_ = 0;       ///< misses() entries ofReason_ has looked at
     int rows_ = 0;
+    /// Rows `state` has under the filter (extending ofReason_ to its newest misses).
+    int rowsOf(const rc::SessionState* state);
 };
 
 }  // namespace rcgui

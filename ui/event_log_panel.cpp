@@ -1,12 +1,14 @@
 #include "event_log_panel.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QTableView>
 #include <QVBoxLayout>
 
 #include "event_log_model.h"
+#include "labels.h"
 
 namespace rcgui {
 
@@ -16,7 +18,12 @@ EventLogPanel::EventLogPanel(QWidget* parent) : QWidget(parent) {
     missesOnly_ = new QCheckBox("Misses only", this);
     follow_ = new QCheckBox("Follow", this);
     follow_->setChecked(true);
+    reason_ = new QComboBox(this);
+    reason_->addItem("any reason", int(rc::MissReason::None));
+    for (int r = 1; r < rc::kMissReasons; ++r) reason_->addItem(text(rc::toString(rc::MissReason(r))), r);
+    reason_->setToolTip("Only the misses of this reason, here and for Next miss (M)");
     row->addWidget(missesOnly_);
+    row->addWidget(reason_);
     row->addWidget(follow_);
     row->addStretch(1);
     layout->addLayout(row);
@@ -30,6 +37,11 @@ EventLogPanel::EventLogPanel(QWidget* parent) : QWidget(parent) {
     table_->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(table_, 1);
     connect(missesOnly_, &QCheckBox::toggled, this, &EventLogPanel::setMissesOnly);
+    connect(reason_, &QComboBox::activated, this, [this](int i) {
+        const auto r = rc::MissReason(reason_->itemData(i).toInt());
+        setReason(r);
+        emit reasonChosen(r);
+    });
     connect(table_, &QTableView::activated, this, [this](const QModelIndex& i) {
         const int e = model_->eventAt(i.row());
         if (e >= 0) emit eventChosen(e);
@@ -43,6 +55,11 @@ EventLogPanel::EventLogPanel(QWidget* parent) : QWidget(parent) {
 void EventLogPanel::setMissesOnly(bool on) {
     if (missesOnly_->isChecked() != on) missesOnly_->setChecked(on);
     model_->setMissesOnly(on);
+}
+
+void EventLogPanel::setReason(rc::MissReason r) {
+    reason_->setCurrentIndex(std::max(0, reason_->findData(int(r))));
+    model_->setReason(r);
 }
 
 void EventLogPanel::refresh(const rc::SessionState* state) {

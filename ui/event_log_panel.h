@@ -3,7 +3,10 @@
 /// \brief Dock panel: the event log, filterable to cache misses.
 #include <QWidget>
 
+#include "search/counters.h"
+
 class QCheckBox;
+class QComboBox;
 class QTableView;
 
 namespace rcgui {
@@ -22,16 +25,21 @@ public:
     void refresh(const rc::SessionState* state);
     EventLogModel* model() const { return model_; }
     void setMissesOnly(bool on);
+    /// Shows only the misses of `r` (rc::MissReason::None: as Misses only says).
+    void setReason(rc::MissReason r);
 
 signals:
     /// A row was activated: the recorder index of its event.
     void eventChosen(int event);
+    /// The reason box changed: Next miss stops at misses of this reason only.
+    void reasonChosen(rc::MissReason r);
 
 private:
     EventLogModel* model_;
     QTableView* table_;
     QCheckBox* missesOnly_;
     QCheckBox* follow_;
+    QComboBox* reason_;
 };
 
 }  // namespace rcgui

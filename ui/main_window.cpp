@@ -453,7 +453,7 @@ void MainWindow::buildToolbars() {
     stepPixelAct_->setToolTip("Trace until a ray of another pixel is traced");
     nextMissAct_ = step->addAction("Next miss", this, &MainWindow::runToNextMiss);
     nextMissAct_->setShortcut(Qt::Key_M);
-    nextMissAct_->setToolTip("Trace until a cache miss, and focus on it (M)");
+    nextMissAct_->setToolTip("Trace until a cache miss (of the reason the event log chooses), and focus on it (M)");
     nextDeferralAct_ = step->addAction("Next deferral", this, &MainWindow::runToNextDeferral);
     nextDeferralAct_->setShortcut(Qt::Key_D);
     nextDeferralAct_->setToolTip("Trace until a ray is deferred (its cheap test failed), and focus on it (D)");
@@ -577,6 +577,7 @@ void MainWindow::buildDocks() {
     resizeDocks({log}, {180}, Qt::Vertical);
     connect(rayTree_, &RayTreePanel::rayChosen, this, &MainWindow::selectEvent);
     connect(eventLog_, &EventLogPanel::eventChosen, this, &MainWindow::selectEvent);
+    connect(eventLog_, &EventLogPanel::reasonChosen, this, [this](rc::MissReason r) { missFilter_ = r; });
     connect(objects_, &ObjectsPanel::objectChosen, this, &MainWindow::selectObject);
 }
 
@@ -752,7 +753,7 @@ void MainWindow::setPresentation(bool on) {
     if (on) {
         shownBeforePresent_.clear();
         for (QDockWidget* d : docks_)
-            if (d->isVisible()) shownBeforePresent_ << d;
+            if (!d->isHidden()) shownBeforePresent_ << d;
         fontsBeforePresent_ = largeFonts_;
     }
     for (QDockWidget* d : docks_) d->setVisible(on ? false : shownBeforePresent_.contains(d));
@@ -989,7 +990,7 @@ bool MainWindow::apply(const GuiOptions& o, bool wait) {
         comparePainter_.setExtraCaption({});
     }
     compareBox_->setCurrentIndex(std::max(0, o.compare ? compareBox_->findData(toString(*o.compare)) : 0));
-    missFilter_ = o.missReason;
+    setMissFilter(o.missReason);
     if (o.panels) showPanels(*o.panels);
     selection_ = {};
     if (scene_ && o.scene == sceneSpec_) resetSession();
@@ -1127,6 +1128,9 @@ bool MainWindow::goToStop(int stop, bool wait) {
 
 QString MainWindow::tourCaption() const { return tourCaption_->isVisible() || stop_ > 0 ? tourCaption_->text() : QString(); }
 
-void MainWindow::setMissFilter(rc::MissReason r) { missFilter_ = r; }
+void MainWindow::setMissFilter(rc::MissReason r) {
+    missFilter_ = r;
+    eventLog_->setReason(r);
+}
 
 }  // namespace rcgui

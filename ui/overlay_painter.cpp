@@ -301,30 +301,43 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
     // Regions of the path being filled: finished ones tinted, the current one bright
     if (!markers && f.path >= 0) {
         if (cachedState_ != s.serial() || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
+            // The region being filled is tinted; finished ones are only outlined, so that
+            // their tints do not stripe the picture
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             regions_.fill(Qt::transparent);
-            for (int px = 0; px < w * h; ++px) {
-                const int i = rec.eventAt(px, f.path);
-                if (i < 0) continue;
-                const int region = rec.events()[i].region;
-                const QColor c = region == f.region ? withAlpha(palette::kRegion, 150) : palette::label(region, 95);
-                regions_.setPixelColor(px % w, px / w, QColor::fromRgba(qPremultiply(c.rgba())));
-            }
+            auto regionAt = [&](int x, int y) {
+                if (x < 0 || y < 0 || x >= w || y >= h) return -1;
+                const int i = rec.eventAt(y * w + x, f.path);
+                return i < 0 ? -1 : rec.events()[std::size_t(i)].region;
+            };
+            const QRgb current = qPremultiply(withAlpha(palette::kRegion, 120).rgba());
+            const QRgb edge = qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba());
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) {
+                    const int region = regionAt(x, y);
+                    if (region < 0) continue;
+                    if (region == f.region) regions_.setPixel(x, y, current);
+                    else if (regionAt(x + 1, y) != region || regionAt(x, y + 1) != region) regions_.setPixel(x, y, edge);
+                }
             cachedState_ = s.serial();
             cachedEvents_ = rec.events().size();
             cachedPath_ = f.path;
         }
+        p.save();
+        p.setRenderHint(QPainter::SmoothPixmapTransform, scale < 1.0);
         p.drawImage(QRectF(0, 0, w, h), regions_);
+        p.restore();
     }
     if (!markers) return;
-    // Queued pixels and deferred seeds: at least a few screen pixels big
-    const double size = std::max(1.0, 8.0 / scale);
+    // Queued pixels and deferred seeds: squares of a fixed size on screen, larger with
+    // large fonts, so that a class sees them from the back row
+    const double size = std::max(1.0, 11.0 * lineScale_ / scale);
     auto mark = [&](int px, const QColor& c) {
         const QPointF ctr = pixelCentre(px, w);
         p.drawRect(QRectF(ctr.x() - size / 2, ctr.y() - size / 2, size, size));
         (void)c;
     };
-    p.setPen(cosmetic(Qt::black, 1.0));
+    p.setPen(cosmetic(Qt::black, 1.5 * lineScale_));
     p.setBrush(palette::kDeferred);
     for (int px : f.deferred) mark(px, palette::kDeferred);
     p.setBrush(palette::kQueued);
@@ -412,7 +425,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
             keys.push_back({palette::kRegion, QString("region %1 being filled, path %2")
                                                   .arg(f.region)
                                                   .arg(QString::fromStdString(session.cacheTree().label(f.path)))});
-            keys.push_back({palette::label(3), "finished regions (tints)"});
+            keys.push_back({palette::kRegionEdge, "edges of finished regions"});
         } else {
             keys.push_back({palette::kQueued, "frontier: breadth-first order only"});
         }

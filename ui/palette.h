@@ -20,6 +20,7 @@ inline const QColor kOrigin{255, 255, 255};      ///< origin sphere of a blocker
 inline const QColor kQueued{118, 255, 3};        ///< breadth-first queue
 inline const QColor kDeferred{255, 23, 68};      ///< deferred seeds
 inline const QColor kRegion{255, 255, 255};      ///< the region being filled
+inline const QColor kRegionEdge{20, 20, 24};     ///< the edges of finished regions
 inline const QColor kSelection{0, 176, 255};     ///< selected pixel and object
 inline const QColor kMissCause{255, 64, 64};     ///< what made a miss: the target missed, the cylinder left
 inline const QColor kLight{255, 214, 0};         ///< lights: their stars and spheres
