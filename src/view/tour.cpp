@@ -136,7 +136,7 @@ public:
         } else if (where_ == Where::Stop) {
             const auto& names = tourSettingNames();
             if (!isText(k) && std::find(names.begin(), names.end(), k) == names.end())
-                failAt(keyLine_, keyColumn_, "unknown stop setting '" + k + "' (a stop holds title, caption and " + joinedNames() + ")");
+                failAt(keyLine_, keyColumn_, "unknown stop setting '" + k + "' (a stop holds title, caption, page and " + joinedNames() + ")");
             for (const TourSetting& s : out_.stops.back().settings)
                 if (s.key == k) failAt(keyLine_, keyColumn_, "stop " + std::to_string(out_.stops.size()) + " sets '" + k + "' twice");
         }
@@ -152,7 +152,7 @@ public:
 
 private:
     enum class Where { Start, Top, Stops, Stop, List, Done };
-    static bool isText(const std::string& k) { return k == "title" || k == "caption"; }
+    static bool isText(const std::string& k) { return k == "title" || k == "caption" || k == "page"; }
 
     /// A value: the tour's title, a stop's title or caption, a setting, or an item of a list.
     bool scalar(const std::string& v, bool isBool = false, bool truth = true, bool isString = false) {
@@ -166,7 +166,7 @@ private:
                 TourStop& s = out_.stops.back();
                 if (isText(key_)) {
                     if (!isString || v.empty()) fail("a stop's '" + key_ + "' must be a non-empty string");
-                    (key_ == "title" ? s.title : s.caption) = v;
+                    (key_ == "title" ? s.title : key_ == "caption" ? s.caption : s.page) = v;
                 } else if (!isBool) {
                     s.settings.push_back({key_, v, keyLine_, keyColumn_});
                 } else if (truth) {

@@ -20,6 +20,7 @@ struct TourSetting {
 struct TourStop {
     std::string title;
     std::string caption;  ///< one to three sentences; the paper's words in quotation marks
+    std::string page;     ///< the docs page it illustrates (its label, e.g. safety_cylinder); may be empty
     std::vector<TourSetting> settings;
     int line = 0, column = 0;  ///< where the stop's object opens
     /// The value of setting `key`, or `otherwise` when the stop does not set it.
@@ -42,7 +43,7 @@ public:
 };
 
 /// The settings a stop may hold: the viewer's options that make sense in a tour. Every
-/// other key of a stop but `title` and `caption` is an error.
+/// other key of a stop but `title`, `caption` and `page` is an error.
 const std::vector<std::string>& tourSettingNames();
 
 /// Parses a tour from JSON text: a top-level object with an optional `title` and a

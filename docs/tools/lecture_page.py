@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""Writes the Lecture page and the tour figures of the algorithm pages from a tour file.
+
+usage: lecture_page.py TOUR OUT_DIR HAVE_PICTURES PAGE...
+
+OUT_DIR/lecture_measured.md lists every stop in order: its title, its caption and (when
+HAVE_PICTURES is 1) the screenshot the docs build made of it, tour_stop_K.png.
+OUT_DIR/tour_PAGE.md holds the stops whose "page" is PAGE, for that page to include;
+every PAGE given gets one, empty when no stop names it."""
+import json
+import sys
+
+
+def escape(text: str) -> str:
+    # Doxygen reads Markdown: keep backslashes, '#', '<' and '@' as text
+    return text.replace("\\", "\\\\").replace("<", "&lt;").replace("@", "\\@").replace("#", "\\#")
+
+
+def figure(tour_path: str, k: int, stop: dict, pictures: bool) -> str:
+    command = f"raycache-gui --tour {tour_path} --stop {k} --window 1280x720 --large-fonts"
+    text = f"**Stop {k}: {escape(stop['title'])}.** {escape(stop['caption'])}\n\n"
+    if pictures:
+        text += f"\\image html tour_stop_{k:02d}.png \"Stop {k} of the lecture, at 1280x720 with large fonts\"\n\n"
+    text += f"\\verbatim\n{command}\n\\endverbatim\n\n"
+    return text
+
+
+def main() -> int:
+    tour_file, out, pictures, pages = sys.argv[1], sys.argv[2], sys.argv[3] == "1", sys.argv[4:]
+    with open(tour_file, encoding="utf-8") as f:
+        tour = json.load(f)
+    tour_path = "tours/" + tour_file.replace("\\", "/").split("/")[-1]
+    stops = tour["stops"]
+    lines = [f"The tour `{tour_path}`, *{escape(tour.get('title', ''))}*: {len(stops)} stops. "
+             f"{escape(tour.get('description', ''))}\n"]
+    if not pictures:
+        lines.append("This docs build was configured without the GUI, so the stops have no pictures: "
+                     "build with Qt 6 (`RAYCACHE_GUI=ON`) and the docs build makes one of each stop.\n")
+    for k, stop in enumerate(stops, 1):
+        lines.append(figure(tour_path, k, stop, pictures))
+    with open(f"{out}/lecture_measured.md", "w", encoding="utf-8") as f:
+        f.write("\n\n".join(lines))
+    for page in pages:
+        mine = [(k, s) for k, s in enumerate(stops, 1) if s.get("page") == page]
+        text = ""
+        if mine:
+            text = ("On a projector: the stop" + ("s" if len(mine) > 1 else "") +
+                    f" of the \\ref lecture that show this page, made by the docs build.\n\n")
+            text += "".join(figure(tour_path, k, s, pictures) for k, s in mine)
+        with open(f"{out}/tour_{page}.md", "w", encoding="utf-8") as f:
+            f.write(text + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
