@@ -78,6 +78,7 @@ int main(int argc, char** argv) {
 
     // The window first, then its rays, traced on the worker: it never waits for them
     rcgui::MainWindow w;
+    w.setWorkerSessions(true);
     if (opt.largeFonts) w.setLargeFonts(true);
     if (opt.present) w.setPresentation(true);
     bool ok = true;

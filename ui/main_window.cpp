@@ -19,6 +19,8 @@
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QScreen>
 #include <QToolBar>
 #include <QToolButton>
@@ -136,10 +138,29 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     buildDocks();
 
     connect(&controller_, &SessionController::changed, this, &MainWindow::refresh);
+    connect(&controller_, &SessionController::failed, this, [this](const QString& why) {
+        reportError_("Cannot start the render", why);
+    });
+    connect(&compare_, &SessionController::failed, this, [this](const QString& why) {
+        reportError_("Cannot start the compared render", why);
+    });
     connect(&controller_, &SessionController::busyChanged, this, &MainWindow::onBusyChanged);
+    // While the worker runs: its picture, and a progress bar with Cancel in the status bar
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1000);
+    progress_->setMaximumWidth(260);
+    progress_->setFormat("%p% of the eye rays");
+    progressCancel_ = new QPushButton("Cancel", this);
+    progressCancel_->setToolTip("Stop the run (Escape); what is traced so far stays");
+    connect(progressCancel_, &QPushButton::clicked, this, &MainWindow::cancelRun);
+    statusBar()->addPermanentWidget(progress_);
+    statusBar()->addPermanentWidget(progressCancel_);
+    progress_->hide();
+    progressCancel_->hide();
     connect(&controller_, &SessionController::snapshot, this, [this](const QImage& img, qint64 steps, double progress) {
         view_->setImage(img);
         stats_->showProgress(steps, progress);
+        progress_->setValue(int(std::lround(1000.0 * progress)));
         statusBar()->showMessage(QString("running… %1 steps").arg(steps));
     });
     connect(&controller_, &SessionController::finished, this, [this](bool completed) {
@@ -270,10 +291,14 @@ void MainWindow::startCompare() {
     rc::RenderOptions o = effectiveOptions();
     o.cache = compareChoice_->cache;
     o.order = compareChoice_->order;
-    try {
-        compare_.reset({scene_, o});
-    } catch (const std::exception& e) {
-        reportError_("Cannot start the compared render", QString::fromUtf8(e.what()));
+    if (workerSessions_) {
+        compare_.resetOnWorker({scene_, o});
+    } else {
+        try {
+            compare_.reset({scene_, o});
+        } catch (const std::exception& e) {
+            reportError_("Cannot start the compared render", QString::fromUtf8(e.what()));
+        }
     }
     split_->setSizes({1000, 1000, sceneView_->isHidden() ? 0 : 1000});
     compareView_->fit();
@@ -569,6 +594,10 @@ void MainWindow::buildDocks() {
     QDockWidget* log = dock("Event log", eventLog_, Qt::BottomDockWidgetArea);
     QDockWidget* obj = dock("Objects", objects_, Qt::BottomDockWidgetArea);
     docks_ = {rt, ct, st, log, obj};  // in panelNames()' order
+    for (QDockWidget* d : docks_)
+        connect(d, &QDockWidget::visibilityChanged, this, [this](bool shown) {
+            if (shown) QTimer::singleShot(0, this, &MainWindow::refresh);
+        });
     tabifyDockWidget(rt, ct);
     rt->raise();
     tabifyDockWidget(log, obj);
@@ -582,6 +611,7 @@ void MainWindow::buildDocks() {
 }
 
 bool MainWindow::loadScene(const QString& spec) {
+    FrameTask task("load-scene");
     std::shared_ptr<const rc::Scene> scene;
     try {
         scene = std::make_shared<const rc::Scene>(rc::loadScene(spec.toStdString()));
@@ -703,15 +733,21 @@ void MainWindow::setImageSize(int width, int height) {
 
 void MainWindow::resetSession() {
     if (!scene_) return;
+    FrameTask task("new-session");
     setPlaying(false);
     // The image size may change: pixels selected in the old render mean nothing now
     selection_.pixel = selection_.event = -1;
     const rc::RenderOptions o = effectiveOptions();
     if (compareChoice_) compare_.clear();  // rebuilt with the new choices below
-    try {
-        controller_.reset({scene_, o});
-    } catch (const std::exception& e) {
-        reportError_("Cannot start the render", QString::fromUtf8(e.what()));
+    // Built on the worker when the window is live (and on to a stop's first rays)
+    if (workerSessions_) {
+        controller_.resetOnWorker({scene_, o}, rc::RunGoal::ToStep, stepsOnReset_);
+    } else {
+        try {
+            controller_.reset({scene_, o});
+        } catch (const std::exception& e) {
+            reportError_("Cannot start the render", QString::fromUtf8(e.what()));
+        }
     }
     startCompare();
     updateControls();
@@ -789,6 +825,9 @@ void MainWindow::setLargeFonts(bool on) {
     QFont label = f;
     label.setPointSizeF(on ? 11.0 : 10.0);
     for (QLabel* l : findChildren<QLabel*>("toolbarLabel")) l->setFont(label);
+    // Tighter buttons, so that each toolbar keeps to one row of a 1280-pixel screen
+    for (QToolBar* t : findChildren<QToolBar*>())
+        t->setStyleSheet(on ? "QToolButton { padding: 1px 2px; margin: 0px; }" : QString());
     view_->setFont(f);
     view_->update();
 }
@@ -881,15 +920,31 @@ void MainWindow::refresh() {
     if (!s) return;
     const double top = heatmapTop();
     overlayPainter_.setHeatmap(heatmap_, top);
-    view_->setImage(HeatmapBuilder::build(*s, heatmap_, beamPath(), top));
-    stats_->refresh(s, compareChoice_ ? compare_.state() : nullptr);
-    cacheTree_->refresh(s);
-    eventLog_->refresh(s);
-    // The ray tree follows the selected pixel, else the pixel being traced
-    int pixel = selection_.pixel;
-    if (pixel < 0 && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
-    rayTree_->showPixel(s, pixel);
-    if (const auto f = rc::RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
+    {
+        FrameTask task("refresh-image");
+        view_->setImage(HeatmapBuilder::build(*s, heatmap_, beamPath(), top));
+    }
+    // Panels out of sight wait until they are shown (each dock refreshes when it appears)
+    if (stats_->isVisibleTo(this)) {
+        FrameTask task("refresh-statistics");
+        stats_->refresh(s, compareChoice_ ? compare_.state() : nullptr);
+    }
+    if (cacheTree_->isVisibleTo(this)) {
+        FrameTask task("refresh-cache-tree");
+        cacheTree_->refresh(s);
+    }
+    if (eventLog_->isVisibleTo(this)) {
+        FrameTask task("refresh-event-log");
+        eventLog_->refresh(s);
+    }
+    if (rayTree_->isVisibleTo(this)) {
+        FrameTask task("refresh-ray-tree");
+        // The ray tree follows the selected pixel, else the pixel being traced
+        int pixel = selection_.pixel;
+        if (pixel < 0 && s->recorder().lastEvent()) pixel = s->recorder().lastEvent()->task.pixel;
+        rayTree_->showPixel(s, pixel);
+        if (const auto f = rc::RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
+    }
     statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
     updateControls();
     if (compareChoice_) refreshCompare();
@@ -897,6 +952,9 @@ void MainWindow::refresh() {
 }
 
 void MainWindow::onBusyChanged(bool busy) {
+    progress_->setVisible(busy);
+    progressCancel_->setVisible(busy);
+    if (busy) progress_->setValue(0);
     if (busy) {
         // The worker owns the state now: let go of every view of it
         eventLog_->refresh(nullptr);
@@ -993,8 +1051,17 @@ bool MainWindow::apply(const GuiOptions& o, bool wait) {
     setMissFilter(o.missReason);
     if (o.panels) showPanels(*o.panels);
     selection_ = {};
-    if (scene_ && o.scene == sceneSpec_) resetSession();
-    else if (!loadScene(o.scene)) return false;
+    // A live window builds the render on the worker, which goes on to the stop's rays
+    const bool onWorker = workerSessions_ && !wait;
+    stepsOnReset_ = onWorker ? std::max<std::int64_t>(0, o.steps) : 0;
+    const bool loaded = (scene_ && o.scene == sceneSpec_) ? (resetSession(), true) : loadScene(o.scene);
+    stepsOnReset_ = 0;
+    if (!loaded) return false;
+    if (onWorker) {
+        pending_ = o;
+        pendingRun_ = false;
+        return true;
+    }
     // The stop's rays, and on to the miss or deferral it shows: here when asked to wait,
     // else on the worker (the window stays live)
     if (rc::SessionState* s = controller_.state()) s->setMissFilter(missFilter_);
@@ -1015,6 +1082,7 @@ bool MainWindow::apply(const GuiOptions& o, bool wait) {
 void MainWindow::continuePending() {
     if (pending_->runTo && !pendingRun_) {
         pendingRun_ = true;
+        if (rc::SessionState* s = controller_.state()) s->setMissFilter(missFilter_);
         if (controller_.start(*pending_->runTo)) return;
     }
     const GuiOptions o = *pending_;

@@ -20,6 +20,8 @@ class QComboBox;
 class QDockWidget;
 class QLabel;
 class QSlider;
+class QProgressBar;
+class QPushButton;
 class QSplitter;
 class QToolBar;
 
@@ -56,6 +58,10 @@ public:
     ~MainWindow() override;
 
     void setErrorReporter(ErrorReporter r) { reportError_ = std::move(r); }
+    /// Builds each new render on the worker, so that the window never waits for a large
+    /// scene's render to be made (the interactive window; tests and screenshots build
+    /// them here, and have their state at once).
+    void setWorkerSessions(bool on) { workerSessions_ = on; }
 
     /// Loads a built-in scene spec or an NFF file and starts a new render of it. On an
     /// error, reports it (file:line:column: message) and keeps the current scene.
@@ -203,11 +209,15 @@ private:
     std::vector<GuiOptions> stops_;
     int stop_ = 0;
     QToolBar* tourBar_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QPushButton* progressCancel_ = nullptr;
     QComboBox* stopBox_ = nullptr;
     QLabel* tourCaption_ = nullptr;
     QSplitter* split_ = nullptr;
     QString sceneSpec_;  ///< as loadScene() was given it
     rc::MissReason missFilter_ = rc::MissReason::None;
+    bool workerSessions_ = false;
+    std::int64_t stepsOnReset_ = 0;  ///< apply(): rays the worker traces after building the render
     std::vector<QDockWidget*> docks_;  ///< in panelNames()' order
     QList<QDockWidget*> shownBeforePresent_;
     bool fontsBeforePresent_ = false, largeFonts_ = false, presenting_ = false;

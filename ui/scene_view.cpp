@@ -479,25 +479,27 @@ void SceneView::paintEvent(QPaintEvent*) {
                    .arg(k.fan.cut ? QString(", the first %1").arg(k.fan.rays.size()) : QString());
     }
     caption_ = cap.join("\n");
+    // Lines wider than the view wrap: the caption keeps the font of the rest (large on a
+    // projector), never cut off
     double cw = 0;
     for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
-    // Too wide for the view: a smaller font, not a cut-off line
-    QFontMetricsF cfm = fm;
-    if (cw + 32 > width() && cw > 0) {
-        QFont small = font();
-        small.setPointSizeF(small.pointSizeF() * std::max(0.6, (width() - 32) / cw));
-        p.setFont(small);
-        cfm = QFontMetricsF(small);
-        cw = 0;
-        for (const QString& c : cap) cw = std::max(cw, cfm.horizontalAdvance(c));
-    }
-    const QRectF box(8, 8, cw + 16, cfm.height() * cap.size() + 8);
+    cw = std::min(cw, std::max(40.0, width() - 32.0));
+    auto height = [&](const QString& c) {
+        return fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+    };
+    double total = 0;
+    for (const QString& c : cap) total += height(c);
+    const QRectF box(8, 8, cw + 16, total + 8);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
     p.drawRoundedRect(box, 6, 6);
     p.setPen(Qt::white);
-    for (int i = 0; i < cap.size(); ++i)
-        p.drawText(QRectF(16, 12 + i * cfm.height(), cw + 2, cfm.height()), Qt::AlignVCenter | Qt::AlignLeft, cap[i]);
+    double y = 12;
+    for (const QString& c : cap) {
+        const double h = height(c);
+        p.drawText(QRectF(16, y, cw + 2, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, c);
+        y += h;
+    }
 }
 
 void SceneView::mousePressEvent(QMouseEvent* e) { lastPos_ = e->position(); }

@@ -32,6 +32,46 @@ void SessionController::reset(rc::SessionConfig config) {
     emit changed();
 }
 
+void SessionController::resetOnWorker(rc::SessionConfig config, rc::RunGoal goal, std::int64_t target) {
+    cancel();
+    wait();
+    state_.reset();
+    busy_ = true;
+    cancel_ = false;
+    emit busyChanged(true);
+    const std::uint64_t run = ++run_;
+    worker_ = QThread::create([this, config = std::move(config), goal, target, run]() mutable {
+        std::unique_ptr<rc::SessionState> s;
+        try {
+            s = std::make_unique<rc::SessionState>(std::move(config));
+        } catch (const std::exception& e) {
+            // Said on the GUI thread; there is no state to hand back
+            const QString why = QString::fromUtf8(e.what());
+            workerResult_ = false;
+            QMetaObject::invokeMethod(this, [this, why, run] {
+                if (!busy_ || run != run_) return;
+                onWorkerDone(false);
+                emit failed(why);
+            }, Qt::QueuedConnection);
+            return;
+        }
+        const bool ok = s->runUntil(goal, target, &cancel_, [this, st = s.get()] {
+            const QImage img = imageOf(*st);
+            const qint64 steps = st->session().steps();
+            const double progress = st->session().progress();
+            QMetaObject::invokeMethod(this, [this, img, steps, progress] {
+                if (busy_) emit snapshot(img, steps, progress);
+            }, Qt::QueuedConnection);
+        });
+        made_ = std::move(s);
+        workerResult_ = ok;
+        QMetaObject::invokeMethod(this, [this, ok, run] {
+            if (busy_ && run == run_) onWorkerDone(ok);
+        }, Qt::QueuedConnection);
+    });
+    worker_->start();
+}
+
 void SessionController::clear() {
     cancel();
     wait();
@@ -115,6 +155,8 @@ void SessionController::onWorkerDone(bool completed) {
         delete worker_;
         worker_ = nullptr;
     }
+    // A render built on the worker is the state from now on
+    if (made_) state_ = std::move(made_);
     busy_ = false;
     emit busyChanged(false);
     emit finished(completed);

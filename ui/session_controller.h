@@ -24,6 +24,9 @@ public:
 
     /// Starts a new render (cancels a running worker first).
     void reset(rc::SessionConfig config);
+    /// Starts a new render on the worker: builds it there (a large scene's blocker lists
+    /// take long), then runs towards `goal`; the state is handed back as a run's is.
+    void resetOnWorker(rc::SessionConfig config, rc::RunGoal goal = rc::RunGoal::ToStep, std::int64_t target = 0);
     /// The state, or null while a worker runs or before the first reset().
     rc::SessionState* state() { return busy_ ? nullptr : state_.get(); }
     const rc::SessionState* state() const { return busy_ ? nullptr : state_.get(); }
@@ -60,12 +63,15 @@ signals:
     void snapshot(const QImage& image, qint64 steps, double progress);
     /// A worker stopped: `completed` is false when it was cancelled.
     void finished(bool completed);
+    /// resetOnWorker() could not build the render: why.
+    void failed(const QString& why);
 
 private:
     void onWorkerDone(bool completed);
     /// start(), going back to the last checkpoint at or before `rewindTo` first (-1: not).
     bool launch(rc::RunGoal goal, std::int64_t target, std::int64_t rewindTo);
     std::unique_ptr<rc::SessionState> state_;
+    std::unique_ptr<rc::SessionState> made_;  ///< built by resetOnWorker()'s worker, not yet handed back
     QThread* worker_ = nullptr;
     std::atomic<bool> cancel_{false};
     std::atomic<bool> workerResult_{false};

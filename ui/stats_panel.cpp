@@ -135,7 +135,7 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
     text_->setText(t);
 
     // A chart a few hundred pixels wide shows no more points than that: every k-th sample
-    constexpr std::size_t kPoints = 400;
+    constexpr std::size_t kPoints = 100;
     auto stride = [](std::size_t n) { return std::max<std::size_t>(1, (n + kPoints - 1) / kPoints); };
     QList<QPointF> h, m, te;
     const std::vector<rc::StatSample>& samples = state->recorder().samples();

@@ -40,4 +40,10 @@ run compare pair --overlays all --steps 2000 --compare none:scanline --heatmap t
 run scene trio --overlays all --steps 3000 --scene-view side
 run fan cube:4 --width 64 --height 64 --spp 4 --light-radius 0.3 --shadow-samples 8 --steps 200000 --select 29,17 \
     --overlays all --scene-view --heatmap hitrate
+# Three stops of the lecture, at a projector's size with large fonts: the cylinder left by
+# a miss (zoomed, with the scene view along the ray), the seed fill (a focus rectangle)
+# and the blocker list between two spheres (the side view)
+run stop3 --tour tours/hanrahan86.json --stop 3 --window 1280x720 --large-fonts
+run stop4 --tour tours/hanrahan86.json --stop 4 --window 1280x720 --large-fonts
+run stop9 --tour tours/hanrahan86.json --stop 9 --window 1280x720 --large-fonts
 echo "valgrind_gui: no errors"
