@@ -502,8 +502,9 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     double kw = 0;
     for (const auto& k : keys) kw = std::max(kw, fm.horizontalAdvance(k.second) + lh * 1.3);
     // A heatmap's colour bar, with values
-    const bool bar =
-        o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate);
+    // A scale shared by two renders side by side is drawn once, beside the first
+    const bool bar = o.legend && (keysShown_ || heatTop_ <= 0.0) &&
+                     (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate);
     QString barTitle = heatmap_ == Heatmap::Tests     ? "tests per pixel (log scale)"
                        : heatmap_ == Heatmap::HitRate ? "cache hit rate per pixel, all its rays"
                                                       : "step of a pixel's first ray";
@@ -511,9 +512,11 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     if (o.legend && heatmap_ == Heatmap::HitRate) keys.push_back({palette::kNoLookups, "no cache lookups"});
     double top = 0;
     lastTop_ = 0;
+    // The scale the picture is painted with (drawn as a bar, or shared with the first)
+    if (o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate))
+        lastTop_ = heatTop_ > 0.0 ? heatTop_ : HeatmapBuilder::scaleOf(s, heatmap_);
     if (bar) {
-        top = heatTop_ > 0.0 ? heatTop_ : HeatmapBuilder::scaleOf(s, heatmap_);
-        lastTop_ = top;
+        top = lastTop_;
         // Room for five labels apart
         kw = std::max({kw, 220.0, 7.0 * fm.horizontalAdvance("100.0"), fm.horizontalAdvance(barTitle) + 16});
     }
@@ -530,7 +533,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     double capHeight = 8, keyHeight = 8;
     for (const QString& c : caption) capHeight += height(c, cw);
     for (const auto& k : keys) keyHeight += height(k.second, kw - lh * 1.3);
-    const double barHeight = bar ? lh * 3.2 : 0.0;
+    const double titleHeight = bar ? height(barTitle, kw - 16) : 0.0;
+    const double barHeight = bar ? lh * 2.2 + titleHeight : 0.0;
     keyHeight += barHeight;
     // Beside the image when a margin has room, else over it (caption top left, key bottom left)
     QRectF capBox(area.left() + 8, area.top() + 8, cw + 16, capHeight);
@@ -540,6 +544,10 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         if (rightRoom >= cw + 32 && keyBox.bottom() + capBox.height() + 8 < area.bottom()) {
             capBox.moveTopLeft(keyBox.topLeft());
             keyBox.moveTop(capBox.bottom() + 8);
+        } else if (rightRoom >= cw + 32 && keys.empty()) {
+            // Only a colour bar: the caption beside the image, the bar under the picture's corner
+            capBox.moveTopLeft(keyBox.topLeft());
+            keyBox.moveTopLeft(QPointF(area.left() + 8, area.bottom() - 8 - keyHeight));
         }
     } else if (leftRoom >= kw + 32) {
         keyBox.moveTopLeft(QPointF(area.left() + 8, std::max(area.top() + 16, image.top()) + capBox.height()));
@@ -575,8 +583,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     }
     if (!bar) return;
     p.setPen(Qt::white);
-    p.drawText(QRectF(keyBox.left() + 8, y, kw, lh), Qt::AlignVCenter | Qt::AlignLeft, barTitle);
-    y += lh;
+    p.drawText(QRectF(keyBox.left() + 8, y, kw - 16, titleHeight), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, barTitle);
+    y += titleHeight;
     const QRectF strip(keyBox.left() + 8, y + 2, kw - 16, lh * 0.8);
     QLinearGradient g(strip.topLeft(), strip.topRight());
     for (int k = 0; k <= 16; ++k) g.setColorAt(k / 16.0, palette::ramp(k / 16.0));
@@ -585,7 +593,9 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     p.drawRect(strip);
     y += lh;
     p.setPen(Qt::white);
-    for (int k = 0; k <= 4; ++k) {
+    // Five values, or three where five would touch
+    const int every = strip.width() < 7.0 * fm.horizontalAdvance(QString::number(top, 'f', 0) + "  ") ? 2 : 1;
+    for (int k = 0; k <= 4; k += every) {
         const double t = k / 4.0;
         const double v = heatmap_ == Heatmap::Tests ? std::expm1(t * std::log1p(top)) : t * top;
         const QString label = heatmap_ == Heatmap::HitRate ? QString("%1%").arg(int(std::lround(100 * t)))

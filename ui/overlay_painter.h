@@ -43,7 +43,7 @@ public:
         heatmap_ = h;
         heatTop_ = top;
     }
-    /// The top of the colour bar's scale last drawn (0: no bar).
+    /// The top of the heatmap scale last painted with (0: none): its colour bar, or the first render's.
     double heatmapTop() const { return lastTop_; }
     /// Lines added under the caption (a compared render: its difference in tests).
     void setExtraCaption(const QStringList& lines) { extraCaption_ = lines; }

@@ -455,7 +455,7 @@ void SceneView::paintEvent(QPaintEvent*) {
             const int id = k.hull.blockers[i];
             ids << QString("#%1%2").arg(id).arg(k.focus && id == k.focus->origin.object ? " (the origin)" : "");
         }
-        if (k.hull.listed > ids.size()) ids << QString("and %L1 more").arg(k.hull.listed - std::size_t(ids.size()));
+        if (k.hull.listed > std::size_t(ids.size())) ids << QString("and %L1 more").arg(k.hull.listed - std::size_t(ids.size()));
         cap << QString("blocker hull of origin (r %1) and target (r %2): %L3 potential blocker%4%5")
                    .arg(num(k.hull.a.r), num(k.hull.b.r)).arg(k.hull.listed)
                    .arg(k.hull.listed == 1 ? "" : "s").arg(ids.isEmpty() ? "" : ": " + ids.join(", "));
