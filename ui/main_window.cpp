@@ -792,11 +792,16 @@ void MainWindow::setPresentation(bool on) {
     presenting_ = on;
     if (on) {
         shownBeforePresent_.clear();
-        for (QDockWidget* d : docks_)
+        raisedBeforePresent_.clear();
+        for (QDockWidget* d : docks_) {
             if (!d->isHidden()) shownBeforePresent_ << d;
+            if (d->isVisible()) raisedBeforePresent_ << d;  // on screen: the front tab of its group
+        }
         fontsBeforePresent_ = largeFonts_;
     }
     for (QDockWidget* d : docks_) d->setVisible(on ? false : shownBeforePresent_.contains(d));
+    if (!on)
+        for (QDockWidget* d : raisedBeforePresent_) d->raise();
     for (QToolBar* t : findChildren<QToolBar*>())
         if (t->objectName() == "render") t->setVisible(!on);
     const bool large = on || fontsBeforePresent_;

@@ -219,7 +219,7 @@ private:
     bool workerSessions_ = false;
     std::int64_t stepsOnReset_ = 0;  ///< apply(): rays the worker traces after building the render
     std::vector<QDockWidget*> docks_;  ///< in panelNames()' order
-    QList<QDockWidget*> shownBeforePresent_;
+    QList<QDockWidget*> shownBeforePresent_, raisedBeforePresent_;
     bool fontsBeforePresent_ = false, largeFonts_ = false, presenting_ = false;
 
     SessionController controller_;

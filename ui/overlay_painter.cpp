@@ -1,6 +1,7 @@
 #include "overlay_painter.h"
 
 #include "view/miss_cause.h"
+#include "view/overlay_shapes.h"
 
 #include <algorithm>
 #include <array>
@@ -86,8 +87,11 @@ void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlay
     proj.setClip(visible.adjusted(-mx, -my, mx, my));
     if (o.frontier) paintFrontier(p, s, scale, false);
     if (o.misses) paintMisses(p, s, scale, sel);
-    if (sel.object >= 0 && sel.object < s.scene().size())
-        paintObject(p, s, proj, sel.object, palette::kSelection, withAlpha(palette::kSelection, 70), 3.0);
+    if (sel.object >= 0 && sel.object < s.scene().size()) {
+        const rc::OverlayShape shape = rc::objectShape(s.scene(), sel.object, proj.core(), rc::ShapeRole::Target);
+        outline(p, toQt(shape.outline), palette::kSelection, 3.0 * lineScale_, shape.flat ? Qt::DashLine : Qt::SolidLine,
+                shape.flat ? QColor(Qt::transparent) : withAlpha(palette::kSelection, 70), &work_, shape.covers);
+    }
     // One ray in focus: the selected one, else the one being traced
     if (auto f = rc::RayFocus::of(s, sel)) {
         if (o.samples) paintSamples(p, s, proj, *f);
@@ -117,13 +121,10 @@ void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlay
 
 void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj,
                                 const rc::RayFocus& f, const Overlays& o) {
-    if (o.hull) paintHull(p, s, proj, f);
-    if (o.cylinder) paintCylinder(p, s, proj, f);
     if (!(o.hull || o.cylinder)) return;
-    paintMissCause(p, s, proj, f);
-    // The ray itself: from its origin to the end of its segment, and its pixel
-    if (auto l = proj.segment(f.ray.o, f.segmentEnd(s.scene())); l && l->length() > 0.5)
-        line(p, *l, palette::kRay, 2.5 * lineScale_);
+    // The core makes the shapes (rc::focusShapes); here each role gets its colour and line
+    for (const rc::OverlayShape& shape : rc::focusShapes(s, f, proj.core(), {o.cylinder, o.hull})) paintShape(p, shape);
+    // The ray's pixel
     const QPointF c = pixelCentre(f.pixel, s.width());
     p.setPen(cosmetic(Qt::black, 2.0));
     p.setBrush(palette::kRay);
@@ -132,83 +133,43 @@ void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Pr
     p.drawEllipse(c, r, r);
 }
 
-void OverlayPainter::paintMissCause(QPainter& p, const rc::SessionState& s, const Projector& proj,
-                                    const rc::RayFocus& f) {
-    // A miss: what the entry held that this ray did not keep to
-    const rc::MissCause c = rc::missCauseOf(s, f);
-    if (!c.valid()) return;
-    if (c.cylinder.radius > 0.0) {
-        const QPolygonF shape = proj.hull({c.cylinder.a, c.cylinder.radius}, {c.cylinder.b, c.cylinder.radius});
-        outline(p, shape, palette::kMissCause, 2.5 * lineScale_, Qt::DashLine, withAlpha(palette::kMissCause, 40), &work_,
-                proj.covers(shape));
-    }
-    if (c.reason == rc::MissReason::TargetMissed || c.reason == rc::MissReason::BlockerHit)
-        paintObject(p, s, proj, c.cachedObject, palette::kMissCause, withAlpha(palette::kMissCause, 50), 3.5);
-    if (c.blocker >= 0) paintObject(p, s, proj, c.blocker, palette::kBlocker, withAlpha(palette::kBlocker, 120), 4.0);
-}
-
-void OverlayPainter::paintCylinder(QPainter& p, const rc::SessionState& s, const Projector& proj,
-                                   const rc::RayFocus& f) {
-    // The active entry's cylinder when it has one, else the cylinder around this ray's segment
-    const rc::FocusCylinder fc = rc::cylinderOf(s, f);
-    const rc::SafetyCylinder& cyl = fc.cylinder;
-    const bool cached = fc.cached;
-    if (!(cyl.radius > 0.0)) return;
-    const QPolygonF shape = proj.hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius});
-    outline(p, shape, palette::kCylinder, (cached ? 2.5 : 2.0) * lineScale_, cached ? Qt::SolidLine : Qt::DashLine,
-            withAlpha(palette::kCylinder, cached ? 60 : 35), &work_, proj.covers(shape));
-    if (auto l = proj.segment(cyl.a, cyl.b); l && l->length() > 0.5)
-        line(p, *l, palette::kCylinder, 1.5 * lineScale_, Qt::DashLine);
-}
-
-void OverlayPainter::paintHull(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f) {
-    const rc::FocusHull h = rc::hullOf(s, f);
-    // An eye ray that hit nothing: the cone of eye rays known to hit nothing either
-    if (h.coneAngle >= 0.0) {
-        const QPolygonF cone = proj.eyeCone(h.coneAxis, h.coneAngle);
-        outline(p, cone, palette::kHull, 2.5 * lineScale_, Qt::DashLine, withAlpha(palette::kHull, 30), &work_,
-                proj.covers(cone));
-        if (auto c = proj.point(proj.eye() + h.coneAxis)) {
-            p.setPen(cosmetic(palette::kHull, 2.0));
-            const double r = 4.0 / std::sqrt(std::abs(p.transform().determinant()));
-            p.drawLine(*c - QPointF(r, r), *c + QPointF(r, r));
-            p.drawLine(*c - QPointF(r, -r), *c + QPointF(r, -r));
+void OverlayPainter::paintShape(QPainter& p, const rc::OverlayShape& shape) {
+    using rc::ShapeRole;
+    const double px = 1.0 / std::max(1e-9, std::sqrt(std::abs(p.transform().determinant())));  // one screen pixel
+    auto closed = [&](const QColor& c, double width, Qt::PenStyle style, int fillAlpha) {
+        // A polygon may hold much of the view: dashed, never tinted
+        if (shape.flat) style = Qt::DashLine;
+        outline(p, toQt(shape.outline), c, width * lineScale_, style,
+                shape.flat || fillAlpha == 0 ? QColor(Qt::transparent) : withAlpha(c, fillAlpha), &work_, shape.covers);
+    };
+    auto segment = [&](const QColor& c, double width, Qt::PenStyle style) {
+        const QLineF l(shape.segment->a.x, shape.segment->a.y, shape.segment->b.x, shape.segment->b.y);
+        if (l.length() > 0.5) line(p, l, c, width * lineScale_, style);
+    };
+    auto star = [&](const QColor& c, double radius, int arms) {
+        const QPointF centre(shape.point->x, shape.point->y);
+        p.setPen(cosmetic(c, arms == 2 ? 2.0 : 3.0));
+        for (int k = 0; k < arms; ++k) {
+            const double ang = (arms == 2 ? M_PI / 4 : 0.0) + k * M_PI / arms;
+            const QPointF d(radius * px * std::cos(ang), radius * px * std::sin(ang));
+            p.drawLine(centre - d, centre + d);
         }
-    }
-    // No target (a ray that hit nothing) or no entry yet: there is no hull to draw
-    if (!h.valid()) return;
-    const rc::Scene& scene = s.scene();
-    const QPolygonF shape = proj.hull(h.a, h.b);
-    outline(p, shape, palette::kHull, 2.5 * lineScale_, Qt::SolidLine, withAlpha(palette::kHull, 45), &work_,
-            proj.covers(shape));
-    const QPolygonF from = proj.silhouette(h.a);
-    outline(p, from, palette::kOrigin, 1.5 * lineScale_, Qt::DashLine, Qt::transparent, &work_, proj.covers(from));
-    for (int id : h.blockers) paintObject(p, s, proj, id, palette::kBlocker, withAlpha(palette::kBlocker, 80), 3.0);
-    if (h.target < scene.size()) {
-        paintObject(p, s, proj, h.target, palette::kTarget, withAlpha(palette::kTarget, 40), 3.0);
-    } else if (auto c = proj.point(h.b.c)) {
-        // A light (or a tile of a large polygon): a small star
-        p.setPen(cosmetic(palette::kTarget, 3.0));
-        const double r = 8.0 / std::sqrt(std::abs(p.transform().determinant()));
-        for (int k = 0; k < 4; ++k) {
-            const double ang = k * M_PI / 4;
-            p.drawLine(*c - QPointF(r * std::cos(ang), r * std::sin(ang)), *c + QPointF(r * std::cos(ang), r * std::sin(ang)));
-        }
-    }
-}
-
-void OverlayPainter::paintObject(QPainter& p, const rc::SessionState& s, const Projector& proj, int object,
-                                 const QColor& lineColor, const QColor& fill, double width) {
-    const rc::Scene& scene = s.scene();
-    if (object < 0 || object >= scene.size()) return;
-    const rc::Object& obj = scene.objects[object];
-    // Polygons (ground planes) may cover the whole view: outline only, no tint
-    if (obj.shape == rc::Shape::Polygon) {
-        const QPolygonF poly = proj.polygon(scene.polygons[obj.index]);
-        outline(p, poly, lineColor, width * lineScale_, Qt::DashLine, Qt::transparent, &work_, proj.covers(poly));
-    } else {
-        const QPolygonF sil = proj.silhouette(obj.bound);
-        outline(p, sil, lineColor, width * lineScale_, Qt::SolidLine, fill, &work_, proj.covers(sil));
+    };
+    switch (shape.role) {
+        case ShapeRole::Cylinder: closed(palette::kCylinder, 2.0, Qt::DashLine, 35); break;
+        case ShapeRole::CachedCylinder: closed(palette::kCylinder, 2.5, Qt::SolidLine, 60); break;
+        case ShapeRole::CylinderAxis: segment(palette::kCylinder, 1.5, Qt::DashLine); break;
+        case ShapeRole::EmptyCone: closed(palette::kHull, 2.5, Qt::DashLine, 30); break;
+        case ShapeRole::EmptyConeAxis: star(palette::kHull, 5.7, 2); break;
+        case ShapeRole::Hull: closed(palette::kHull, 2.5, Qt::SolidLine, 45); break;
+        case ShapeRole::Origin: closed(palette::kOrigin, 1.5, Qt::DashLine, 0); break;
+        case ShapeRole::Target: closed(palette::kTarget, 3.0, Qt::SolidLine, 40); break;
+        case ShapeRole::TargetPoint: star(palette::kTarget, 8.0, 4); break;
+        case ShapeRole::Blocker: closed(palette::kBlocker, 3.0, Qt::SolidLine, 80); break;
+        case ShapeRole::CylinderLeft: closed(palette::kMissCause, 2.5, Qt::DashLine, 40); break;
+        case ShapeRole::MissedTarget: closed(palette::kMissCause, 3.5, Qt::SolidLine, 50); break;
+        case ShapeRole::BlockerHit: closed(palette::kBlocker, 4.0, Qt::SolidLine, 120); break;
+        case ShapeRole::Ray: segment(palette::kRay, 2.5, Qt::SolidLine); break;
     }
 }
 

@@ -7,6 +7,7 @@
 #include <QStringList>
 
 #include "overlay_options.h"
+#include "view/overlay_shapes.h"
 #include "view/ray_focus.h"
 
 namespace rcgui {
@@ -57,11 +58,8 @@ public:
 private:
     void paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f,
                     const Overlays& o);
-    void paintCylinder(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
-    void paintMissCause(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
-    void paintHull(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
-    void paintObject(QPainter& p, const rc::SessionState& s, const Projector& proj, int object,
-                     const QColor& line, const QColor& fill, double width);
+    /// One shape of the core's (rc::focusShapes), in its role's colour and line.
+    void paintShape(QPainter& p, const rc::OverlayShape& shape);
     void paintFrontier(QPainter& p, const rc::SessionState& s, double scale, bool markers);
     void paintMisses(QPainter& p, const rc::SessionState& s, double scale, const rc::Selection& sel);
     void paintSamples(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f);
