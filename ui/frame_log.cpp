@@ -37,7 +37,16 @@ bool TimedApplication::notify(QObject* receiver, QEvent* event) {
     FrameLog& log = FrameLog::instance();
     if (!log.enabled() || QThread::currentThread() != thread()) return QApplication::notify(receiver, event);
     if (event->type() == QEvent::Paint && receiver && receiver->isWidgetType()) paintSeen_ = true;
-    if (depth_ > 0) return QApplication::notify(receiver, event);
+    if (depth_ > 0) {
+        // Inside a task: a widget's paint is logged too (lower case), to tell which view costs
+        if (event->type() != QEvent::Paint || !receiver) return QApplication::notify(receiver, event);
+        const QString name = QString("paint:") + receiver->metaObject()->className();
+        QElapsedTimer timer;
+        timer.start();
+        const bool handled = QApplication::notify(receiver, event);
+        log.record(name, double(timer.nsecsElapsed()) * 1e-6);
+        return handled;
+    }
     // An outermost event of the UI thread: one task (the events it sends are part of it)
     // Named before it is delivered: a DeferredDelete deletes its receiver (and the event)
     const char* type = QMetaEnum::fromType<QEvent::Type>().valueToKey(event->type());

@@ -12,7 +12,8 @@ namespace rcgui {
 /// Writes one line per UI-thread task, `NAME MILLISECONDS`: each event the application
 /// delivers on the UI thread (outermost only: an event handled inside another is part of
 /// it), named `EventType:ReceiverClass`, and the named phases of start-up, among them
-/// `first-frame` (from start to the first painted window).
+/// `first-frame` (from start to the first painted window). Inside a task, each widget's
+/// paint gets a line of its own, `paint:WidgetClass`, to tell which view a slow repaint owes.
 class FrameLog {
 public:
     /// The process's log (closed until open() is called).

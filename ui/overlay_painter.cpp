@@ -266,10 +266,12 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
             // their tints do not stripe the picture
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             regions_.fill(Qt::transparent);
+            // Each pixel's region at this path, looked up once
+            std::vector<int> region(std::size_t(w) * std::size_t(h), -1);
+            for (int px = 0; px < w * h; ++px)
+                if (const int i = rec.eventAt(px, f.path); i >= 0) region[std::size_t(px)] = rec.events()[std::size_t(i)].region;
             auto regionAt = [&](int x, int y) {
-                if (x < 0 || y < 0 || x >= w || y >= h) return -1;
-                const int i = rec.eventAt(y * w + x, f.path);
-                return i < 0 ? -1 : rec.events()[std::size_t(i)].region;
+                return x < 0 || y < 0 || x >= w || y >= h ? -1 : region[std::size_t(y) * std::size_t(w) + std::size_t(x)];
             };
             const QRgb current = qPremultiply(withAlpha(palette::kRegion, 120).rgba());
             const QRgb edge = qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba());

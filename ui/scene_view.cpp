@@ -178,6 +178,7 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent) {
 
 void SceneView::setSketch(SceneSketch sketch) {
     sketch_ = std::move(sketch);
+    ++sketchSerial_;
     update();
 }
 
@@ -270,29 +271,18 @@ void SceneView::frame() {
     centre_.ry() += (top - bottom) / 2.0 / scale_;
 }
 
-void SceneView::paintEvent(QPaintEvent*) {
-    QPainter p(this);
-    p.fillRect(rect(), QColor(28, 30, 36));
-    p.setRenderHint(QPainter::Antialiasing, true);
-    frame();
+void SceneView::paintBodies(QPainter& p, const std::vector<bool>& blocker, int target, double lw) const {
     const SceneSketch& k = sketch_;
-    const double lw = std::max(1.0, QFontMetricsF(font()).height() / 9.0);  // lines follow Large fonts
     auto disc = [&](const rc::Sphere& s) {
         const QPointF c = toWidget(s.c);
         const double r = std::max(1.0, s.r * scale_);
         return QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r);
     };
-    auto hull = [&](const rc::Sphere& a, const rc::Sphere& b) {
-        return discHull(toWidget(a.c), a.r * scale_, toWidget(b.c), b.r * scale_);
-    };
-    std::vector<bool> blocker(k.bodies.size(), false);
-    for (int id : k.hull.blockers) blocker[std::size_t(id)] = true;
-    const int target = k.hull.valid() ? k.hull.targetObject : (k.focus ? k.focus->hit : -1);
-
-    // [scene-view-paint]
-    // The objects, farthest first, so that nearer ones are drawn over them
-    std::vector<int> order(k.bodies.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    const QRectF screen = QRectF(rect()).adjusted(-4, -4, 4, 4);
+    std::vector<int> order;
+    order.reserve(k.bodies.size());
+    for (std::size_t i = 0; i < k.bodies.size(); ++i)
+        if (disc(k.bodies[i].bound).intersects(screen)) order.push_back(int(i));
     std::sort(order.begin(), order.end(), [&](int a, int b) {
         return basis_.depth(k.bodies[std::size_t(a)].bound.c) < basis_.depth(k.bodies[std::size_t(b)].bound.c);
     });
@@ -313,6 +303,47 @@ void SceneView::paintEvent(QPaintEvent*) {
             p.drawEllipse(disc(b.bound));
         }
     }
+}
+
+void SceneView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), QColor(28, 30, 36));
+    p.setRenderHint(QPainter::Antialiasing, true);
+    frame();
+    const SceneSketch& k = sketch_;
+    const double lw = std::max(1.0, QFontMetricsF(font()).height() / 9.0);  // lines follow Large fonts
+    auto disc = [&](const rc::Sphere& s) {
+        const QPointF c = toWidget(s.c);
+        const double r = std::max(1.0, s.r * scale_);
+        return QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r);
+    };
+    auto hull = [&](const rc::Sphere& a, const rc::Sphere& b) {
+        return discHull(toWidget(a.c), a.r * scale_, toWidget(b.c), b.r * scale_);
+    };
+    std::vector<bool> blocker(k.bodies.size(), false);
+    for (int id : k.hull.blockers) blocker[std::size_t(id)] = true;
+    const int target = k.hull.valid() ? k.hull.targetObject : (k.focus ? k.focus->hit : -1);
+
+    // [scene-view-paint]
+    // The objects, farthest first, so that nearer ones are drawn over them: only those on
+    // screen, drawn once into a layer kept while the sketch and the view stay the same
+    // (a scene of thousands of spheres costs one image a repaint)
+    const QPointF p0 = toWidget(rc::Vec3(0.0)), px = toWidget(rc::Vec3(1, 0, 0)), py = toWidget(rc::Vec3(0, 1, 0)),
+                  pz = toWidget(rc::Vec3(0, 0, 1));
+    const std::vector<double> layerKey{double(sketchSerial_), double(width()), double(height()), devicePixelRatioF(),
+                                       p0.x(), p0.y(), px.x(), px.y(), py.x(), py.y(), pz.x(), pz.y(), lw,
+                                       double(cylinderShown_)};
+    if (layerKey != bodiesKey_) {
+        bodiesKey_ = layerKey;
+        bodies_ = QPixmap(size() * devicePixelRatioF());
+        bodies_.setDevicePixelRatio(devicePixelRatioF());
+        bodies_.fill(Qt::transparent);
+        QPainter lp(&bodies_);
+        lp.setRenderHint(QPainter::Antialiasing, true);
+        paintBodies(lp, blocker, target, lw);
+    }
+    p.drawPixmap(0, 0, bodies_);
+
     // The blocker hull of origin and target, its potential blockers, origin and target
     if (k.hull.valid() && hullShown_) {
         p.setPen(pen(palette::kHull, 2.5 * lw));

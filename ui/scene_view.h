@@ -8,6 +8,7 @@
 
 #include <QPolygonF>
 #include <QString>
+#include <QPixmap>
 #include <QWidget>
 
 #include "gui_options.h"
@@ -98,6 +99,12 @@ protected:
 private:
     void frame();
     SceneSketch sketch_;
+    std::uint64_t sketchSerial_ = 0;  ///< setSketch() calls, for the bodies' layer
+    QPixmap bodies_;                  ///< the scene's objects as last drawn
+    std::vector<double> bodiesKey_;   ///< what they were drawn for (sketch, size, projection)
+    /// Draws the objects on screen, farthest first; potential blockers, the target and
+    /// the ray's objects in bold.
+    void paintBodies(QPainter& p, const std::vector<bool>& blocker, int target, double lw) const;
     SceneAngle angle_ = SceneAngle::Side;
     double yaw_ = 0.0, pitch_ = 0.0, zoom_ = 1.0;
     bool whole_ = false;

@@ -133,6 +133,10 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
         t += "<br>" + own;
     }
     text_->setText(t);
+    // The chart at most twice a second (and whenever the render is done): relaying it out
+    // is the costliest thing a refresh does
+    if (!s.done() && chartClock_.isValid() && chartClock_.elapsed() < 500) return;
+    chartClock_.start();
 
     // A chart a few hundred pixels wide shows no more points than that: every k-th sample
     constexpr std::size_t kPoints = 100;

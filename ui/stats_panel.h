@@ -1,6 +1,7 @@
 #pragma once
 /// \file
 /// \brief Dock panel: live counters and a chart of hits, misses and tests over steps.
+#include <QElapsedTimer>
 #include <QWidget>
 
 class QLabel;
@@ -32,6 +33,7 @@ public:
     void showProgress(qint64 steps, double progress);
 
 private:
+    QElapsedTimer chartClock_;  ///< since the chart was last updated
     QLabel* text_;
     QChart* chart_;
     QLineSeries *hits_, *misses_, *tests_, *otherTests_;
