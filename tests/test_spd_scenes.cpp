@@ -225,3 +225,19 @@ TEST_CASE("every scene in scenes/: every cache, order and search gives the same 
                 }
     }
 }
+
+TEST_CASE("gears2's transmitters reflect: one reflection ray beside every refraction ray", "[spd][shading]") {
+    // SPD's gears write their transmitters with Ks 0; SPD's rules 8 and 9 count a
+    // reflection ray at every transmitter hit. The ground (Ks 0.6) reflects too, and the
+    // opaque gears (Ks 0) do not, so reflections outnumber refractions
+    const auto scene = std::make_shared<const Scene>(readNffFile(kScenes + "/gears2.nff"));
+    RenderOptions opt;
+    opt.width = 64;
+    opt.height = 64;
+    opt.accel = AccelKind::Bvh;
+    RenderSession r(scene, opt);
+    r.run();
+    const Counters& n = r.counters();
+    REQUIRE(n.rays[int(RayKind::Refraction)] > 0);
+    CHECK(n.rays[int(RayKind::Reflection)] > n.rays[int(RayKind::Refraction)]);
+}
