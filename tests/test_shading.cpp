@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <random>
+#include <numbers>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "trace/fresnel.h"
 #include "trace/shading.h"
+#include "uniform.h"
 
 using namespace rc;
 
@@ -169,9 +170,9 @@ TEST_CASE("the Phong highlight peaks in the mirror direction at Ks", "[shading][
     const Vec3 peak = unblocked(Vec3(-4.0, 0.0, 5.0));
     REQUIRE(peak.x == Approx(0.5 * c + 0.3).epsilon(1e-12));
     // 10 degrees off the mirror direction: Ks cos(10 deg)^10
-    const double off = 10.0 * 3.14159265358979323846 / 180.0;
-    const Vec3 from(-4.0 * std::sqrt(2.0) * std::sin(0.25 * 3.14159265358979323846 + off), 0.0,
-                    1.0 + 4.0 * std::sqrt(2.0) * std::cos(0.25 * 3.14159265358979323846 + off));
+    const double off = 10.0 * std::numbers::pi / 180.0;
+    const Vec3 from(-4.0 * std::sqrt(2.0) * std::sin(0.25 * std::numbers::pi + off), 0.0,
+                    1.0 + 4.0 * std::sqrt(2.0) * std::cos(0.25 * std::numbers::pi + off));
     REQUIRE(unblocked(from).x == Approx(0.5 * c + 0.3 * std::pow(std::cos(off), 10.0)).epsilon(1e-12));
     REQUIRE(unblocked(from).x < peak.x);
 }
@@ -228,8 +229,8 @@ TEST_CASE("project is the inverse of the eye rays", "[camera]") {
     REQUIRE(centre.has_value());
     REQUIRE(centre->x == Approx(39.5).epsilon(1e-12));
     REQUIRE(centre->y == Approx(29.5).epsilon(1e-12));
-    std::mt19937_64 rng(6);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Random rng(6);
+    const Uniform u{0.0, 1.0};
     for (int i = 0; i < 1000; ++i) {
         const double x = 80.0 * u(rng), y = 60.0 * u(rng), t = 0.1 + 20.0 * u(rng);
         const Ray r = gen.primary(x, y);

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <random>
 #include <sstream>
 #include <string>
 
@@ -19,6 +18,7 @@
 #include "geometry/truncated_cone.h"
 #include "render/render_session.h"
 #include "scene/nff_reader.h"
+#include "uniform.h"
 
 using namespace rc;
 
@@ -155,8 +155,8 @@ TEST_CASE("concave polygons: the notch is empty, the body is hit", "[polygon]") 
 TEST_CASE("closed meshes are watertight: a ray through a shared edge or vertex hits one face", "[polygon]") {
     // A cube of six quads and an octahedron of eight triangles, turned at random, with
     // coordinates that do not round nicely
-    std::mt19937_64 rng(1986);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(1986);
+    const Uniform u{-1.0, 1.0};
     const Vec3 cubeV[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     const int cubeF[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "analysis/median.h"
 #include "study/precise_intersection.h"
 
 namespace rc {
@@ -128,9 +129,8 @@ SceneStability checkStability(const StiffScene& s, int depth) {
                 out.hitsChecked = e.size() + precision.flips;
                 out.hitFlips = precision.flips;
                 if (!e.empty()) {
-                    std::sort(e.begin(), e.end());
-                    out.maxRelTError = e.back();
-                    out.medianRelTError = e[e.size() / 2];
+                    out.maxRelTError = *std::max_element(e.begin(), e.end());
+                    out.medianRelTError = median(e);
                 }
                 out.acneRays = precision.acneRays;
                 out.acnePixels = std::count(precision.acne.begin(), precision.acne.end(), 1);
