@@ -44,7 +44,8 @@ TEST_CASE("embree finds what the scan finds, within its float tolerance", "[embr
         }
         INFO(scene.name << ": " << differ << " of " << rays << " rays differ");
         REQUIRE(hits > rays / 4);
-        // TOOLCHAIN.md: about 0.1% of grazing rays; allow 0.5%
+        // Embree intersects in single precision (search/embree_search.h): a ray that grazes
+        // a silhouette may pick another object than the double-precision scan; allow 0.5%
         REQUIRE(differ * 200 <= rays);
     }
 }
