@@ -101,10 +101,8 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
             sessions.back()->addSink(builders.back().get());
         }
     }
-    // One thread: the caller's. A thread started for it cost a breadth-first render more
-    // than a scanline one (balls:4 at 512x512, one processor, median of 5, BVH alone /
-    // blocker+ bfs: 0.455 / 0.474 s on a started thread, 0.461 / 0.461 s on the caller's;
-    // with --stats 0.490 / 0.494 s and 0.477 / 0.482 s)
+    // One thread: the caller's, so that a render on one thread is the same render as a
+    // session's own run()
     if (threads == 1) sessions[0]->run(progress);
     else runOnThreads(sessions, progress);
     // [parallel-split]

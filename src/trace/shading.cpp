@@ -59,8 +59,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     };
     // A child names its step; the render finds its path in the cache tree. It is built
     // where it is kept, field by field: a task built aside and copied in is read back in
-    // wide loads from narrow stores still in flight, which stalls (measured with perf:
-    // two fifths of shade's time). So is a Ray built aside
+    // wide loads from narrow stores still in flight, which stalls. So is a Ray built aside
     auto spawn = [&](RayKind kind, int light, int sample, const Vec3& d, double tmax,
                      const Vec3& weight) -> RayTask& {
         RayTask& c = children.emplace_back();
