@@ -1,12 +1,12 @@
 #pragma once
 // Random scenes that stress the caches: overlapping, tangent, nested and transparent
 // spheres, and polygons.
-#include <random>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "scene/scene.h"
+#include "uniform.h"
 
 namespace rc::testing {
 
@@ -24,8 +24,8 @@ inline const char* name(Layout l) {
 }
 
 inline Scene randomScene(Layout layout, std::uint64_t seed, int count = 24) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(seed);
+    const Uniform u{-1.0, 1.0};
     Scene s;
     s.name = std::string(name(layout)) + "-" + std::to_string(seed);
     s.background = Vec3(0.2, 0.3, 0.5);

@@ -79,4 +79,11 @@ TEST_CASE("breadth-first bands reuse the memory of the bands before", "[alloc]")
         REQUIRE(many.allocations - few.allocations < few.allocations / 4);
     }
 }
+#else
+// AddressSanitizer replaces operator new with its own: counting is not possible there, and
+// the build says so instead of passing in silence
+TEST_CASE("the allocation tests are skipped under AddressSanitizer", "[alloc]") {
+    WARN("SKIPPED: built with AddressSanitizer, whose allocator these tests cannot count; "
+         "the default build runs them");
+}
 #endif

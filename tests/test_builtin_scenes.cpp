@@ -4,6 +4,7 @@
 #include <random>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -15,7 +16,6 @@ using namespace rc;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 bool sameScene(const Scene& a, const Scene& b) {
     if (a.spheres.size() != b.spheres.size() || a.objects.size() != b.objects.size() ||
@@ -115,7 +115,7 @@ TEST_CASE("cube:N fills the view: every sphere inside it, the bound just fitting
     const Scene s = makeBuiltin("cube:6");
     const Camera& c = s.camera;
     const Vec3 forward = glm::normalize(c.at - c.from);
-    const double halfAngle = 0.5 * c.angle * kPi / 180.0;
+    const double halfAngle = 0.5 * c.angle * std::numbers::pi / 180.0;
     CHECK(glm::length(c.from - s.bound.c) * std::sin(halfAngle) == Approx(s.bound.r));
     for (const Sphere& sp : s.spheres) {
         const Vec3 toC = sp.c - c.from;

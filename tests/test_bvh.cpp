@@ -3,7 +3,6 @@
 #include <catch2/catch.hpp>
 
 #include <memory>
-#include <random>
 
 #include <glm/geometric.hpp>
 
@@ -12,6 +11,7 @@
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
 #include "search/bounding_volume_hierarchy.h"
+#include "uniform.h"
 
 using namespace rc;
 using rc::testing::HullQuery;
@@ -25,8 +25,8 @@ TEST_CASE("bvh and linear scan agree on random rays, ties included", "[bvh][exac
         const LinearSearch linear(scene);
         const BoundingVolumeHierarchy bvh(scene);
         REQUIRE(bvh.nodeCount() >= 2 * 80 / 8 - 1);
-        std::mt19937_64 rng(9);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        Random rng(9);
+        const Uniform u{-1.0, 1.0};
         Counters a, b;
         int hits = 0;
         for (int i = 0; i < 20000; ++i) {
@@ -35,7 +35,7 @@ TEST_CASE("bvh and linear scan agree on random rays, ties included", "[bvh][exac
             if (i % 5 == 0) d = Vec3(0.0, 0.0, d.z > 0 ? 1.0 : -1.0);  // zero direction components
             RayOrigin from;
             if (i % 4 == 1) {  // leaving or entering an object's surface
-                const int k = int(rng() % std::uint64_t(scene.size()));
+                const int k = rng.index(scene.size());
                 if (scene.objects[k].shape == Shape::Sphere) {
                     const Sphere& s = scene.spheres[scene.objects[k].index];
                     const Vec3 n = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
@@ -60,8 +60,8 @@ TEST_CASE("bvh culls exactly the objects a scan over all of them finds", "[bvh][
     const Scene scene = testing::randomScene(Layout::Overlapping, 7, 120);
     const LinearSearch linear(scene, LinearSearch::Regions::Scan);
     const BoundingVolumeHierarchy bvh(scene);
-    std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> u(-6.0, 6.0);
+    Random rng(3);
+    const Uniform u{-6.0, 6.0};
     int nonEmpty = 0;
     for (int i = 0; i < 300; ++i) {
         const Sphere from{{u(rng), u(rng), u(rng)}, std::abs(u(rng)) / 6.0};
@@ -87,8 +87,8 @@ TEST_CASE("the linear search culls through its hierarchy exactly as by a scan", 
     for (Layout layout : {Layout::Overlapping, Layout::Polygons}) {
         const Scene scene = testing::randomScene(layout, 5, 150);
         const LinearSearch tree(scene), scan(scene, LinearSearch::Regions::Scan);
-        std::mt19937_64 rng(17);
-        std::uniform_real_distribution<double> u(-6.0, 6.0);
+        Random rng(17);
+        const Uniform u{-6.0, 6.0};
         int cut = 0;
         for (int i = 0; i < 300; ++i) {
             const Sphere from{{u(rng), u(rng), u(rng)}, std::abs(u(rng)) / 6.0};

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <memory>
-#include <random>
 
 #include <glm/geometric.hpp>
 
@@ -16,6 +15,7 @@
 #include "search/bounding_volume_hierarchy.h"
 #include "search/cylinder_cache.h"
 #include "search/direction_lists.h"
+#include "uniform.h"
 
 using namespace rc;
 using rc::testing::Layout;
@@ -26,8 +26,8 @@ const Layout kLayouts[] = {Layout::Overlapping, Layout::Tangent, Layout::Nested,
 
 // Coherent query streams: eye rays sweeping, rays leaving surfaces both ways, shadow rays
 std::vector<Query> queryStream(const Scene& s, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(seed);
+    const Uniform u{-1.0, 1.0};
     std::vector<Query> out;
     const Vec3 eye = s.camera.from;
     for (int i = 0; i < 400; ++i) {
@@ -436,8 +436,8 @@ TEST_CASE("a tiled polygon is listed when a tile meets the hull: the tiles under
     const int firstTile = scene.size() + 1 + int(scene.lights.size());
     REQUIRE(lists.sites() > firstTile);  // the scene has tiled polygons
     const double tolerance = 1e-7 * scene.extent();
-    std::mt19937_64 rng(29);
-    std::uniform_int_distribution<int> pick(0, scene.size() - 1);
+    Random rng(29);
+    auto pick = [&](Random& r) { return r.index(scene.size()); };
     int listedTiled = 0, leftOutTiled = 0;
     for (int k = 0; k < 400; ++k) {
         const int origin = pick(rng), target = pick(rng);
@@ -475,8 +475,8 @@ TEST_CASE("a direction list holds every object a ray leaving its site in its cel
     // Rays leave random points of each site (an object's surface, a tile of a large polygon,
     // the eye) in random directions; every object the ray hits, anywhere along it, must be
     // on the list of its site and cell
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(11);
+    const Uniform u{-1.0, 1.0};
     const std::string rings = std::string(RAYCACHE_SCENES_DIR) + "/rings2.nff";
     for (const std::string& spec : {std::string("cube:4"), std::string("balls:1"), std::string("glass"), rings}) {
         const Scene scene = loadScene(spec);

@@ -3,13 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <random>
 
 #include <glm/geometric.hpp>
 
 #include "random_scenes.h"
 #include "search/complete_search.h"
 #include "search/embree_search.h"
+#include "uniform.h"
 
 using namespace rc;
 using rc::testing::Layout;
@@ -23,8 +23,8 @@ TEST_CASE("embree finds what the scan finds, within its float tolerance", "[embr
         const Scene scene = testing::randomScene(layout, 17, 60);
         const LinearSearch linear(scene);
         const EmbreeSearch embree(scene);
-        std::mt19937_64 rng(9);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        Random rng(9);
+        const Uniform u{-1.0, 1.0};
         Counters a, b;
         int hits = 0, differ = 0;
         const int rays = 20000;
@@ -44,7 +44,8 @@ TEST_CASE("embree finds what the scan finds, within its float tolerance", "[embr
         }
         INFO(scene.name << ": " << differ << " of " << rays << " rays differ");
         REQUIRE(hits > rays / 4);
-        // TOOLCHAIN.md: about 0.1% of grazing rays; allow 0.5%
+        // Embree intersects in single precision (search/embree_search.h): a ray that grazes
+        // a silhouette may pick another object than the double-precision scan; allow 0.5%
         REQUIRE(differ * 200 <= rays);
     }
 }

@@ -2,7 +2,6 @@
 #include <catch2/catch.hpp>
 
 #include <memory>
-#include <random>
 
 #include <glm/geometric.hpp>
 
@@ -11,6 +10,7 @@
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
 #include "search/uniform_grid.h"
+#include "uniform.h"
 
 using namespace rc;
 using rc::testing::HullQuery;
@@ -21,8 +21,8 @@ TEST_CASE("grid and linear scan agree on random rays, ties included", "[grid][ex
         const Scene scene = testing::randomScene(layout, 21, 60);
         const LinearSearch linear(scene);
         const UniformGrid grid(scene);
-        std::mt19937_64 rng(5);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        Random rng(5);
+        const Uniform u{-1.0, 1.0};
         Counters a, b;
         for (int i = 0; i < 20000; ++i) {
             const Vec3 o = Vec3(u(rng), u(rng), u(rng)) * 6.0;
@@ -80,8 +80,8 @@ Scene manySpheres(int n, double r, At at) {
 /// `count` random rays from a box of half-side `spread`; each agrees with the scan.
 void agreesWithScan(const Scene& scene, const UniformGrid& grid, int count, double spread) {
     const LinearSearch linear(scene);
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(11);
+    const Uniform u{-1.0, 1.0};
     Counters a, b;
     for (int i = 0; i < count; ++i) {
         const Vec3 o = Vec3(u(rng), u(rng), u(rng)) * spread;
@@ -125,8 +125,8 @@ TEST_CASE("a flat scene and tiny spheres in a huge box stay exact", "[grid][memo
     REQUIRE(flatGrid.references() < 3000 * 8);
     agreesWithScan(flat, flatGrid, 400, 4.0);
     // 2,000 tiny spheres in the unit cube, two huge ones far out at the corners of the box
-    std::mt19937_64 rng(4);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Random rng(4);
+    const Uniform u{0.0, 1.0};
     const Scene tiny = manySpheres(2002, 0.001, [&](int i) {
         if (i == 0) return Vec3(-1e6);
         if (i == 1) return Vec3(1e6);
@@ -140,8 +140,8 @@ TEST_CASE("grid culls find exactly what a scan over every object finds", "[grid]
     const Scene scene = testing::randomScene(Layout::Overlapping, 9, 150);
     const LinearSearch linear(scene, LinearSearch::Regions::Scan);
     const UniformGrid grid(scene);
-    std::mt19937_64 rng(8);
-    std::uniform_real_distribution<double> u(-6.0, 6.0);
+    Random rng(8);
+    const Uniform u{-6.0, 6.0};
     int nonEmpty = 0;
     std::vector<int> near;
     for (int i = 0; i < 400; ++i) {
@@ -174,8 +174,8 @@ TEST_CASE("grid rays that start on a surface agree with the scan", "[grid][exact
         const Scene scene = testing::randomScene(layout, 33, 80);
         const LinearSearch linear(scene);
         const UniformGrid grid(scene);
-        std::mt19937_64 rng(2);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        Random rng(2);
+        const Uniform u{-1.0, 1.0};
         Counters a, b;
         int onSurface = 0;
         for (int i = 0; i < 4000; ++i) {

@@ -2,12 +2,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <random>
 
 #include <glm/geometric.hpp>
 
 #include "geometry/cone.h"
 #include "geometry/safety_cylinder.h"
+#include "uniform.h"
 
 using namespace rc;
 
@@ -25,8 +25,8 @@ double bruteHullDistance(const Vec3& p, const Sphere& a, const Sphere& b) {
 }
 
 void checkAgainstBruteForce(const Sphere& a, const Sphere& b, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-4.0, 4.0);
+    Random rng(seed);
+    const Uniform u{-4.0, 4.0};
     for (int i = 0; i < 300; ++i) {
         const Vec3 p(u(rng), u(rng), u(rng));
         const double exact = hullDistance(p, a, b);
@@ -106,8 +106,8 @@ TEST_CASE("capsule containment is the containment of both endpoints", "[cylinder
     REQUIRE_FALSE(cyl.contains(Vec3(0, 0.5, 0), Vec3(11.5, 0, 0)));
     REQUIRE_FALSE(cyl.contains(Vec3(5, 1.01, 0), Vec3(6, 0, 0)));
     // convexity: every point between two contained endpoints is contained
-    std::mt19937_64 rng(9);
-    std::uniform_real_distribution<double> u(-1.5, 11.5);
+    Random rng(9);
+    const Uniform u{-1.5, 11.5};
     for (int i = 0; i < 2000; ++i) {
         const Vec3 p(u(rng), u(rng) / 10, u(rng) / 10), q(u(rng), u(rng) / 10, u(rng) / 10);
         if (!cyl.contains(p, q)) continue;

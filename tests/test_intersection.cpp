@@ -2,12 +2,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <random>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "geometry/intersection.h"
 #include "geometry/polygon.h"
+#include "uniform.h"
 
 using namespace rc;
 
@@ -27,15 +28,17 @@ long double referenceRoot(const Ray& ray, const Sphere& s, bool far) {
     return far ? (-b + root) / a : (-b - root) / a;
 }
 
-Vec3 randomUnit(std::mt19937_64& rng) {
-    std::normal_distribution<double> g;
-    return glm::normalize(Vec3(g(rng), g(rng), g(rng)));
+/// Uniform on the unit sphere (Archimedes: z uniform in [-1, 1], the angle uniform).
+Vec3 randomUnit(Random& rng) {
+    const double z = rng.uniform(-1.0, 1.0), phi = 2.0 * std::numbers::pi * rng.unit();
+    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return Vec3(s * std::cos(phi), s * std::sin(phi), z);
 }
 }  // namespace
 
 TEST_CASE("stable roots match a long double reference on random rays", "[intersection]") {
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(7);
+    const Uniform u{-1.0, 1.0};
     double worst = 0.0;
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -74,7 +77,7 @@ TEST_CASE("textbook roots lose the small far sphere the stable form keeps", "[in
 }
 
 TEST_CASE("rays starting on a sphere: convexity instead of an epsilon", "[intersection]") {
-    std::mt19937_64 rng(11);
+    Random rng(11);
     const Sphere s{Vec3(1.0, 2.0, 3.0), 2.5};
     for (int i = 0; i < 2000; ++i) {
         const Vec3 n = randomUnit(rng);
@@ -101,8 +104,8 @@ TEST_CASE("polygon hits: inside, outside, either winding, leaving", "[intersecti
     REQUIRE_FALSE(makePolygon({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {}, square));
     Polygon reversed;
     REQUIRE_FALSE(makePolygon({{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}}, {}, reversed));
-    std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    Random rng(3);
+    const Uniform u{-2.0, 2.0};
     for (int i = 0; i < 5000; ++i) {
         const Vec3 o(u(rng), u(rng), 3.0);
         const Vec3 target(u(rng), u(rng), 0.0);

@@ -84,7 +84,7 @@ TEST_CASE("no Ks: no reflection rays, no T: no refraction rays", "[left_out]") {
     CHECK(n.rays[int(RayKind::Refraction)] == 0);
     CHECK(n.rays[int(RayKind::Shadow)] > 0);
     const auto left = leftOut(dull);
-    CHECK(has(left, "reflection rays: no material has Ks > 0"));
+    CHECK(has(left, "reflection rays: no material has Ks > 0 or T > 0"));
     CHECK(has(left, "refraction rays and interior blocker lists: no transparent objects"));
     CHECK_FALSE(has(left, "shadow rays"));
 
@@ -94,6 +94,11 @@ TEST_CASE("no Ks: no reflection rays, no T: no refraction rays", "[left_out]") {
     CHECK(g.rays[int(RayKind::Reflection)] > 0);
     CHECK(g.rays[int(RayKind::Refraction)] > 0);
     CHECK(leftOut(glass).empty());
+
+    // Glass without Ks reflects all the same: a dielectric reflects by Fresnel
+    const Scene clear = twoSpheres(0.0, 0.6, true);
+    CHECK(render(clear).rays[int(RayKind::Reflection)] > 0);
+    CHECK(leftOut(clear).empty());
 }
 
 TEST_CASE("depth 1 leaves out every secondary ray but shadows, blocker lists only for pairs met", "[left_out]") {
@@ -151,12 +156,12 @@ TEST_CASE("stats JSON and raycache info list what was left out", "[left_out][cli
     REQUIRE(j.contains("left_out"));
     const auto left = j["left_out"].get<std::vector<std::string>>();
     CHECK(has(left, "shadow rays: no lights"));
-    CHECK(has(left, "reflection rays: no material has Ks > 0"));
+    CHECK(has(left, "reflection rays: no material has Ks > 0 or T > 0"));
     CHECK(has(left, "refraction rays and interior blocker lists: no transparent objects"));
     CHECK(has(left, "blocker lists:"));
     CHECK(j["rays"]["shadow"] == 0);
     const std::string info = runCli("info " + nff.string());
     CHECK(info.find("left out   shadow rays: no lights") != std::string::npos);
-    CHECK(info.find("reflection rays: no material has Ks > 0") != std::string::npos);
+    CHECK(info.find("reflection rays: no material has Ks > 0 or T > 0") != std::string::npos);
     std::filesystem::remove_all(dir);
 }

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <random>
 #include <sstream>
 #include <string>
 
@@ -19,6 +18,7 @@
 #include "geometry/truncated_cone.h"
 #include "render/render_session.h"
 #include "scene/nff_reader.h"
+#include "uniform.h"
 
 using namespace rc;
 
@@ -155,8 +155,8 @@ TEST_CASE("concave polygons: the notch is empty, the body is hit", "[polygon]") 
 TEST_CASE("closed meshes are watertight: a ray through a shared edge or vertex hits one face", "[polygon]") {
     // A cube of six quads and an octahedron of eight triangles, turned at random, with
     // coordinates that do not round nicely
-    std::mt19937_64 rng(1986);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Random rng(1986);
+    const Uniform u{-1.0, 1.0};
     const Vec3 cubeV[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     const int cubeF[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
@@ -224,4 +224,20 @@ TEST_CASE("every scene in scenes/: every cache, order and search gives the same 
                     REQUIRE(r.counters().totalRays() == reference.counters().totalRays());
                 }
     }
+}
+
+TEST_CASE("gears2's transmitters reflect: one reflection ray beside every refraction ray", "[spd][shading]") {
+    // SPD's gears write their transmitters with Ks 0; SPD's rules 8 and 9 count a
+    // reflection ray at every transmitter hit. The ground (Ks 0.6) reflects too, and the
+    // opaque gears (Ks 0) do not, so reflections outnumber refractions
+    const auto scene = std::make_shared<const Scene>(readNffFile(kScenes + "/gears2.nff"));
+    RenderOptions opt;
+    opt.width = 64;
+    opt.height = 64;
+    opt.accel = AccelKind::Bvh;
+    RenderSession r(scene, opt);
+    r.run();
+    const Counters& n = r.counters();
+    REQUIRE(n.rays[int(RayKind::Refraction)] > 0);
+    CHECK(n.rays[int(RayKind::Reflection)] > n.rays[int(RayKind::Refraction)]);
 }

@@ -172,3 +172,19 @@ TEST_CASE("balls:2 renders to the same bytes as scenes/balls2.nff", "[sphereflak
         REQUIRE(a.image().rgb8() == b.image().rgb8());
     }
 }
+
+TEST_CASE("balls:4 makes the rays SPD published for it, within SPD's 10%", "[sphereflake][spd]") {
+    // SPD's README, for the default-size balls at 512x512, depth 5 (the eye ray is depth 1),
+    // no adaptive cutoff: 175,095 reflection rays, 954,368 shadow rays, no refraction. SPD
+    // shoots 513x513 eye rays through pixel corners, RayCache 512x512: 0.4% fewer
+    RenderOptions opt;
+    opt.width = 512;
+    opt.height = 512;
+    opt.accel = AccelKind::Bvh;
+    RenderSession r(std::make_shared<const Scene>(makeBuiltin("balls:4")), opt);
+    r.run();
+    const Counters& n = r.counters();
+    CHECK(double(n.rays[int(RayKind::Reflection)]) == Approx(175095.0).epsilon(0.10));
+    CHECK(double(n.rays[int(RayKind::Shadow)]) == Approx(954368.0).epsilon(0.10));
+    CHECK(n.rays[int(RayKind::Refraction)] == 0);
+}

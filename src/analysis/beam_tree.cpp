@@ -46,10 +46,9 @@ void BeamTreeBuilder::Block::Free::operator()(Ray* p) const { std::free(p); }
 
 void BeamTreeBuilder::PathLog::grow() {
     // Small blocks, each twice the last, then huge pages. Most paths hold a few rays, and a
-    // render may have hundreds of thousands of paths (distributed ray tracing: cube:3 at
-    // 64x64, 64 samples a pixel, soft shadows and gloss, 371,008 paths): with a first block
-    // of 48 KB each, `render --stats` took 1.8 GB and 12-16 s; with these, 370 MB and 6-7 s
-    // (3.9 s without --stats)
+    // render may have hundreds of thousands of paths (distributed ray tracing with many
+    // samples a pixel, soft shadows and gloss): a large first block for each would take
+    // gigabytes
     seal();
     const std::size_t last = blocks.empty() ? 0 : blocks.back().capacity;
     blocks.emplace_back(last == 0                    ? kFirstBlock

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "analysis/beam_tree.h"
+#include "analysis/median.h"
 #include "cli/commands.h"
 #include "cli/cpu_clock.h"
 #include "cli/plot_script.h"
@@ -42,12 +43,6 @@ std::vector<double> defaultValues(const std::string& sweep) {
     return {1.0, 2.0, 4.0, 8.0, 16.0};  // spp
 }
 // [coherence-defaults]
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 struct Measure {
     Counters n;

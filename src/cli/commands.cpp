@@ -20,6 +20,7 @@
 #include "render/parallel_render.h"
 #include "render/report.h"
 #include "scene/builtin_scenes.h"
+#include "scene/nff_reader.h"
 
 #include <unistd.h>
 
@@ -63,8 +64,8 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     }
     c->add_option("--accel", f.accel, "complete search: linear | grid | bvh | embree (comparison only)")
         ->check(CLI::IsMember({"linear", "grid", "bvh", "embree"}))->capture_default_str();
-    c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, 16384));
-    c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, 16384));
+    c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, int(NffLimits::maxResolution)));
+    c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, int(NffLimits::maxResolution)));
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
         ->check(CLI::Range(1, 64))->capture_default_str();
     c->add_option("--cutoff", f.cutoff, "rays whose weight is below this are not spawned (0: off)")
@@ -77,7 +78,7 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     c->add_option("--band", f.band,
                   "scanlines per band in bfs and progressive orders (0: whole image; default: 8 in front of "
                   "the linear scan for a cache that defers its misses (cylinder, blocker, blocker+), else 1)")
-        ->check(CLI::Range(0, 16384));
+        ->check(CLI::Range(0, int(NffLimits::maxResolution)));
     c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter and of distributed ray tracing's samples")
         ->capture_default_str();
 }

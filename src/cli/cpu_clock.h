@@ -27,10 +27,9 @@ inline double processSeconds() {
 
 /// Keeps the calling thread, and the threads it starts, on the processor it runs on now,
 /// and returns that processor (-1 where it cannot: elsewhere than Linux). For a table of
-/// ratios measured side by side: on a virtual machine two processors can differ by half in
-/// speed (cube:5 at 256x256 on the machine RayCache is measured on: 0.079 s on one, 0.116 s
-/// on the other, the faster one changing over the day), and a thread the scheduler moves
-/// between them mid-table would compare renders made at different speeds.
+/// ratios measured side by side: on a virtual machine two processors can differ much in
+/// speed, and a thread the scheduler moves between them mid-table would compare renders
+/// made at different speeds.
 inline int pinToCurrentCpu() {
 #if defined(__linux__)
     const int cpu = sched_getcpu();

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "render/output_files.h"
 #include "scene/scene.h"
 
 int main(int argc, char** argv) {
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
             if (*c.app) return c.run();
         return 2;
     } catch (const rc::SceneError& e) {
+        std::cerr << "raycache: " << e.what() << "\n";
+        return 2;
+    } catch (const rc::OutputError& e) {  // an output that cannot be written
         std::cerr << "raycache: " << e.what() << "\n";
         return 2;
     } catch (const std::invalid_argument& e) {

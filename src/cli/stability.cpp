@@ -59,9 +59,10 @@ int stability(const StabilityArgs& a) {
     if (a.intersection) return intersectionTable(a);
     const std::string dir = a.suite.empty() ? defaultStiffSuiteDir() : a.suite;
     const std::vector<StiffScene> suite = loadStiffSuite(dir);
-    std::printf("Stability suite: %zu scenes (%s), each rendered with caches none, cylinder, blocker\n"
-                "and orders scanline, progressive, bfs (9 runs; cached runs verify every answer).\n"
-                "differ: pixels unlike none/scanline's, bit for bit; t err: relative error of hit\n"
+    std::printf("Stability suite: %zu scenes (%s), each rendered in front of searches linear, grid, bvh\n"
+                "with caches none, cylinder, blocker, blocker+, blocker+dir and orders scanline,\n"
+                "progressive, bfs (45 runs; cached runs verify every answer).\n"
+                "differ: pixels unlike linear/none/scanline's, bit for bit; t err: relative error of hit\n"
                 "distances against long double; flips: hits the reference calls misses; acne: pixels\n"
                 "with a shadow ray blocked by its own surface or nearer than 1e-9 |origin|.\n\n",
                 suite.size(), dir.empty() ? "generators only" : ("generators + " + dir).c_str());
@@ -82,7 +83,8 @@ int stability(const StabilityArgs& a) {
         std::fflush(stdout);
         nlohmann::json runs = nlohmann::json::array();
         for (const StabilityRun& run : r.runs)
-            runs.push_back({{"cache", std::string(toString(run.cache))},
+            runs.push_back({{"accel", std::string(toString(run.accel))},
+                            {"cache", std::string(toString(run.cache))},
                             {"order", std::string(toString(run.order))},
                             {"seconds", run.seconds},
                             {"rays", run.rays},

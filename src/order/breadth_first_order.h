@@ -47,7 +47,7 @@ private:
     void enqueueNeighbours(int local);
     /// The rays of path `node` (a cache tree node), made room for a band of them. Called for
     /// every ray spawned, so the common case (the path has room) is inline and making room
-    /// is not: as one function, a call took 34 instructions (callgrind, balls:4 at 512x512)
+    /// is not
     std::vector<RayTask>& pathRays(int node) {
         if (std::size_t(node) < paths_.size() && paths_[std::size_t(node)].capacity() != 0)
             return paths_[std::size_t(node)];

@@ -8,7 +8,7 @@ std::vector<std::string> leftOut(const Scene& scene, const RenderOptions* option
     bool reflective = false, transparent = false, lit = false;
     for (const Object& o : scene.objects) {
         const Material& m = scene.materials[o.material];
-        reflective |= m.ks > 0.0;
+        reflective |= m.ks > 0.0 || m.kt > 0.0;  // every transmitter also reflects
         transparent |= m.kt > 0.0;
         lit |= m.kd > 0.0 || (m.ks > 0.0 && m.shine > 0.0);
     }
@@ -20,7 +20,7 @@ std::vector<std::string> leftOut(const Scene& scene, const RenderOptions* option
     if (options && options->shading.maxDepth <= 1) {
         out.push_back("reflection and refraction rays: depth 1 traces eye rays only");
     } else {
-        if (!reflective) out.push_back("reflection rays: no material has Ks > 0");
+        if (!reflective) out.push_back("reflection rays: no material has Ks > 0 or T > 0");
         if (!transparent) out.push_back("refraction rays and interior blocker lists: no transparent objects");
     }
     if (options && counters && (options->cache == CacheKind::Blocker || options->cache == CacheKind::BlockerPlus ||

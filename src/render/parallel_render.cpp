@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <thread>
 
 namespace rc {
@@ -15,11 +16,15 @@ constexpr int kBatch = 4096;  ///< rays a worker traces between reporting its pr
 void runOnThreads(std::vector<std::unique_ptr<RenderSession>>& sessions, const std::function<bool(double)>& progress) {
     const int threads = int(sessions.size());
     // A session belongs to its thread until the join; the calling thread sees only these
-    // atomics (each worker's fraction done) and, after the join, the sessions themselves
+    // (each worker's fraction done, and under the lock how many run and whether one has
+    // news) and, after the join, the sessions themselves
     std::atomic<bool> cancel{false};
-    std::atomic<int> running{threads};
     std::vector<std::atomic<double>> fraction(static_cast<std::size_t>(threads));
     std::vector<std::exception_ptr> failure(static_cast<std::size_t>(threads));
+    std::mutex lock;
+    std::condition_variable posted;
+    int running = threads;
+    bool news = false;
     std::vector<std::thread> pool;
     for (int k = 0; k < threads; ++k) {
         fraction[k].store(0.0);
@@ -31,22 +36,40 @@ void runOnThreads(std::vector<std::unique_ptr<RenderSession>>& sessions, const s
                     while (n < kBatch && s.step()) ++n;
                     fraction[k].store(s.progress(), std::memory_order_relaxed);
                     if (s.done()) break;
+                    // Wake the caller to report progress (and to hear whether to stop)
+                    if (progress) {
+                        {
+                            std::lock_guard<std::mutex> hold(lock);
+                            news = true;
+                        }
+                        posted.notify_one();
+                    }
                 }
             } catch (...) {  // e.g. std::bad_alloc: stop the others and rethrow on the caller
                 failure[k] = std::current_exception();
                 cancel = true;
             }
-            running.fetch_sub(1, std::memory_order_release);
+            {
+                std::lock_guard<std::mutex> hold(lock);
+                --running;
+            }
+            posted.notify_one();
         });
     }
-    while (running.load(std::memory_order_acquire) > 0) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    // Sleep until a worker has news or every worker is done: no polling
+    std::unique_lock<std::mutex> hold(lock);
+    while (running > 0) {
+        posted.wait(hold, [&] { return news || running == 0; });
+        news = false;
         if (progress && !cancel.load()) {
+            hold.unlock();
             double done = 0.0;
             for (const auto& f : fraction) done += f.load(std::memory_order_relaxed);
             if (!progress(done / threads)) cancel = true;
+            hold.lock();
         }
     }
+    hold.unlock();
     for (std::thread& t : pool) t.join();
     for (const std::exception_ptr& e : failure)
         if (e) std::rethrow_exception(e);
@@ -78,10 +101,8 @@ ParallelRun renderParallel(std::shared_ptr<const Scene> scene, const RenderOptio
             sessions.back()->addSink(builders.back().get());
         }
     }
-    // One thread: the caller's. A thread started for it cost a breadth-first render more
-    // than a scanline one (balls:4 at 512x512, one processor, median of 5, BVH alone /
-    // blocker+ bfs: 0.455 / 0.474 s on a started thread, 0.461 / 0.461 s on the caller's;
-    // with --stats 0.490 / 0.494 s and 0.477 / 0.482 s)
+    // One thread: the caller's, so that a render on one thread is the same render as a
+    // session's own run()
     if (threads == 1) sessions[0]->run(progress);
     else runOnThreads(sessions, progress);
     // [parallel-split]

@@ -23,18 +23,11 @@ inline constexpr int kAutoBand = -1;
 
 /// The band an order works in when none is asked for. Breadth-first order keeps a band's rays of a
 /// generation in memory, and they are written and read back once each. In front of the linear scan
-/// a complete search is dear, and regions of several scanlines save searches (Table 1 at 512x512,
-/// blocker, bfs: 1 scanline makes about as many tests as scanline order, 8 make 14% fewer on cube:8
-/// and 19% on cube:5). 8 scanlines are as good as 16 at saving them and hold half the memory,
-/// 1.7 MB of rays at 512 wide against 3.3 MB, more than the processor's 1 MB second-level cache:
-/// cube:8, blocker, bfs, pinned to one processor, median of 7 interleaved runs, 0.4136 s with 16
-/// scanlines, 0.3994 with 8, 0.4040 with 4 (tests 0.211, 0.213, 0.216 of the uncached); at 1024
-/// wide 1.435, 1.395 and 1.397 s; at 256 wide 8 and 16 alike. In front of a grid, a BVH or Embree a
-/// search is cheap and the memory is what costs: 1 scanline (`raycache bench --scenes
-/// scenes/balls2.nff --width 512 --height 512`, bvh, blocker+, bfs: 157.6 ns a ray with 16
-/// scanlines, 146.0 with 1; the BVH alone 146.8; tests per ray 6.51 and 6.52). Nor does a cache
-/// that defers no miss gain from large regions: blocker+dir answers its misses from lists (cube:5
-/// at 512x512, linear, bfs: 0.126 s with 16 scanlines, 0.110 with 1; scanline order 0.107).
+/// a complete search is dear, and regions of several scanlines save searches: 8 scanlines save about
+/// as many as 16 and hold half the memory (a band of 16 at 512 wide outgrows a second-level cache of
+/// 1 MB). In front of a grid, a BVH or Embree a search is cheap and the memory is what costs: 1
+/// scanline. Nor does a cache that defers no miss gain from large regions: blocker+dir answers its
+/// misses from lists, so 1 scanline too. `raycache table1` and `raycache bench --band` measure it.
 int bandFor(AccelKind accel, CacheKind cache);
 
 /// Everything a render is told.
@@ -57,10 +50,9 @@ struct RenderOptions {
     /// in pixels. (0, 0), the default, leaves every eye ray as it is.
     glm::dvec2 pixelOffset{0.0, 0.0};
     /// Distributed ray tracing's samples: one path each; whether they share entries.
-    /// Shared by default: measured on cube:4 at 96x96 (spp 4, light radius 0.3 with 4
-    /// shadow samples, gloss 5 with 2), blocker in scanline order answers 78% of rays from
-    /// its cache with shared entries against 36% per sample, and searches on 0.136 rays in
-    /// 1 against 0.227; breadth-first order is the same either way (see cache_tree.h).
+    /// Shared by default: in scanline and progressive order the samples of a pixel follow
+    /// each other, so a shared entry answers each with what the one before found;
+    /// breadth-first order is the same either way (see cache_tree.h).
     SampleEntries sampleEntries = SampleEntries::Shared;
 };
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 #include <system_error>
 
@@ -16,7 +17,6 @@ namespace rc {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxCube = 64;
 
 
@@ -55,7 +55,7 @@ Scene makeCube(int n, std::uint64_t seed) {
     cam.width = cam.height = 512;
     cam.up = Vec3(0.0, 1.0, 0.0);
     cam.at = s.bound.c;
-    const double dist = s.bound.r / std::sin(0.5 * cam.angle * kPi / 180.0);
+    const double dist = s.bound.r / std::sin(0.5 * cam.angle * std::numbers::pi / 180.0);
     cam.from = cam.at + dist * glm::normalize(Vec3(1.0, 0.8, 1.3));
 
     // Two lights above the camera, one to each side, so that spheres cast shadows

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -12,7 +13,7 @@ RayGenerator::RayGenerator(const Camera& cam, int width, int height)
     forward_ = glm::normalize(cam.at - cam.from);
     right_ = glm::normalize(glm::cross(forward_, cam.up));
     up_ = glm::cross(right_, forward_);
-    const double half = std::tan(cam.angle * 3.14159265358979323846 / 360.0);
+    const double half = std::tan(cam.angle * std::numbers::pi / 360.0);
     const double m = double(std::max(width, height));
     sx_ = half * width / m;
     sy_ = half * height / m;

@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -10,12 +11,10 @@ namespace rc {
 
 namespace {
 
-// SPD's own constant, and the matrices and points of its library: 4 x 4 matrices that
-// multiply row vectors (x, y, z, w) from the right. Every expression below keeps SPD's
+// The matrices and points of SPD's library: 4 x 4 matrices that multiply row vectors
+// (x, y, z, w) from the right. SPD's PI, 3.141592653589793, is std::numbers::pi's double. Every expression below keeps SPD's
 // order of operations, so that the doubles come out the same as SPD's, bit for bit
 // (this file is compiled without floating-point contraction, see src/CMakeLists.txt).
-constexpr double kSpdPi = 3.141592653589793;
-
 using Point4 = std::array<double, 4>;
 using Matrix4 = std::array<std::array<double, 4>, 4>;
 
@@ -83,7 +82,7 @@ Vec3 printed(const Point4& p) { return Vec3(printed(p[0]), printed(p[1]), printe
 /// the mirror direction; a highlight of no width prints as 100000.
 double phongExponent(double degrees) {
     if (degrees <= 0.0) return 100000.0;
-    return printed(std::log(0.5) / std::log(std::cos(degrees * kSpdPi / 180.0)));
+    return printed(std::log(0.5) / std::log(std::cos(degrees * std::numbers::pi / 180.0)));
 }
 
 // [sphereflake-children]
@@ -103,7 +102,7 @@ std::array<Point4, 9> childDirections() {
     // Three copies of the trio, 120 degrees apart
     std::array<Point4, 9> dirs;
     for (int set = 0; set < 3; ++set) {
-        const Matrix4 turn = axisMatrix(AxisZ, set * 2.0 * kSpdPi / 3.0);
+        const Matrix4 turn = axisMatrix(AxisZ, set * 2.0 * std::numbers::pi / 3.0);
         for (int k = 0; k < 3; ++k) dirs[std::size_t(set * 3 + k)] = transform(trio[std::size_t(k)], turn);
     }
     return dirs;
@@ -126,7 +125,7 @@ public:
         if (direction[2] >= 1.0) {
             turn = identityMatrix();
         } else if (direction[2] <= -1.0) {
-            turn = axisMatrix(AxisY, kSpdPi);
+            turn = axisMatrix(AxisY, std::numbers::pi);
         } else {
             const Point4 z = {0.0, 0.0, 1.0, 0.0};
             Point4 axis = {z[1] * direction[2] - z[2] * direction[1], z[2] * direction[0] - z[0] * direction[2],

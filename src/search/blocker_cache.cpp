@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -174,7 +175,7 @@ Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, 
     // Inside the cone: angle(d, axis) < alpha, tested by sine and cosine, not by an angle
     ++n.coneTests;
     const double cosT = glm::dot(q.ray.d, e.coneAxis);
-    const bool inside = e.coneAngle < 0.5 * 3.141592653589793
+    const bool inside = e.coneAngle < 0.5 * std::numbers::pi
                             ? cosT > 0.0 && glm::length(glm::cross(q.ray.d, e.coneAxis)) < e.coneSin
                             : cosT > e.coneCos;
     if (inside) return {true, {}, Decision::Hit};
@@ -274,7 +275,7 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     const Sphere from = lists_.siteSphere(lists_.originSite(e.origin));
     EmptyCone cone(scene_, from, e.coneAxis, from.r + slack_, e.origin);
     search_.cull(cone);
-    e.coneAngle = std::min(cone.angle, 3.14159) - 1e-9;
+    e.coneAngle = std::min(cone.angle, std::numbers::pi) - 1e-9;
     // [empty-cone]
     e.coneCos = std::cos(e.coneAngle);
     e.coneSin = std::sin(e.coneAngle) * (1.0 - 1e-12);

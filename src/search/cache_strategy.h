@@ -39,9 +39,8 @@ enum class LookupMode {
 /// The outcome of one lookup.
 ///
 /// Its fields are laid out flat in sixteen bytes, so that a lookup is returned in two
-/// registers. Returned in memory (an Answer and four flags take 32 bytes), its caller read it
-/// back in wide loads from the callee's narrow stores still in flight, which stalls: on cube:8
-/// (linear, blocker+, bfs), half of BlockerCache::lookup's samples sat on that copy.
+/// registers: a larger one is returned in memory, and its caller reads it back in wide loads
+/// from the callee's narrow stores still in flight, which stalls.
 struct Lookup {
     Lookup() = default;
     Lookup(bool known, const Answer& a, Decision d = Decision::Uncached, MissReason why = MissReason::None,

@@ -50,14 +50,12 @@ struct CacheEntry {
 /// beam tree need one ray per path and pixel); the choice is whether its path has an entry
 /// of its own.
 ///
-/// Measured (`raycache coherence cube:4 --sweep spp --values 4 --light-radius 0.3
-/// --shadow-samples 4 --gloss 5 --gloss-samples 2 --seed 7 --sample-entries E`, 96x96):
-/// in scanline and progressive order the samples of one pixel follow each other, and a
-/// shared entry answers sample k with what sample k - 1 found a moment before (blocker,
-/// scanline: hit rate 0.78 shared against 0.36 per sample; complete searches per ray 0.136
-/// against 0.227; cylinder 0.45 against 0.78). Breadth-first order fills one path at a time,
-/// so sample k's fill starts where sample k - 1's ended: the two choices measure the same.
-/// Shared is the default.
+/// In scanline and progressive order the samples of one pixel follow each other, and a
+/// shared entry answers sample k with what sample k - 1 found a moment before; an entry per
+/// sample last saw the neighbouring pixel's sample k. Breadth-first order fills one path at
+/// a time, so sample k's fill starts where sample k - 1's ended: the two choices come out
+/// alike. Shared is the default; `raycache coherence --sample-entries per-sample|shared`
+/// measures them.
 enum class SampleEntries : std::uint8_t {
     PerSample,  ///< one entry per (path, sample index): sample k of a pixel meets sample k of its neighbour
     Shared,     ///< the samples of a path share one entry: sample k meets sample k - 1 of the same pixel

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <random>
+#include <numbers>
 #include <type_traits>
 
 #include <glm/geometric.hpp>
+
+#include "scene/random.h"
 
 namespace rc {
 
@@ -84,23 +86,21 @@ struct Probe {
 };
 
 // Points uniformly on a disk of radius `r` around `c`, perpendicular to `n`
-Vec3 diskPoint(std::mt19937_64& g, const Vec3& c, const Vec3& n, double r) {
-    auto unit = [&] { return double(g() >> 11) * 0x1.0p-53; };
+Vec3 diskPoint(Random& g, const Vec3& c, const Vec3& n, double r) {
     Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     const Vec3 u = glm::normalize(glm::cross(n, a)), v = glm::cross(n, u);
-    const double rho = r * std::sqrt(unit()), phi = 6.283185307179586 * unit();
+    const double rho = r * std::sqrt(g.unit()), phi = 2.0 * std::numbers::pi * g.unit();
     return c + rho * (std::cos(phi) * u + std::sin(phi) * v);
 }
 
-Vec3 randomDirection(std::mt19937_64& g) {
-    auto unit = [&] { return double(g() >> 11) * 0x1.0p-53; };
-    const double z = 2 * unit() - 1, phi = 6.283185307179586 * unit();
+Vec3 randomDirection(Random& g) {
+    const double z = 2 * g.unit() - 1, phi = 2.0 * std::numbers::pi * g.unit();
     const double s = std::sqrt(std::max(0.0, 1 - z * z));
     return Vec3(s * std::cos(phi), s * std::sin(phi), z);
 }
 
 // Rays from `dist` away aimed at a disk 1.1 times the sphere's radius
-std::vector<Probe> aimed(std::mt19937_64& g, const Sphere& s, double dist, int n) {
+std::vector<Probe> aimed(Random& g, const Sphere& s, double dist, int n) {
     std::vector<Probe> out;
     for (int i = 0; i < n; ++i) {
         const Vec3 from = s.c + dist * randomDirection(g);
@@ -110,8 +110,7 @@ std::vector<Probe> aimed(std::mt19937_64& g, const Sphere& s, double dist, int n
     return out;
 }
 
-std::vector<Probe> makeCase(int which, std::mt19937_64& g, int n) {
-    auto unit = [&] { return double(g() >> 11) * 0x1.0p-53; };
+std::vector<Probe> makeCase(int which, Random& g, int n) {
     switch (which) {
         case 0: return aimed(g, {Vec3(0.3, -0.2, 0.1), 1.0}, 5.0, n);
         case 1: return aimed(g, {Vec3(0.0), 1.0}, 1e6, n);
@@ -125,7 +124,7 @@ std::vector<Probe> makeCase(int which, std::mt19937_64& g, int n) {
             for (int i = 0; i < n; ++i) {
                 const Vec3 d = randomDirection(g);
                 const Vec3 side = glm::normalize(glm::cross(d, randomDirection(g)));
-                const double off = s.r * (1.0 - std::pow(10.0, -3.0 - 9.0 * unit()));
+                const double off = s.r * (1.0 - std::pow(10.0, -3.0 - 9.0 * g.unit()));
                 out.push_back({{s.c + off * side - 10.0 * d, d}, s});
             }
             return out;
@@ -135,8 +134,8 @@ std::vector<Probe> makeCase(int which, std::mt19937_64& g, int n) {
             std::vector<Probe> out;
             const Sphere s{Vec3(0.0, -1e6, 0.0), 1e6};
             for (int i = 0; i < n; ++i) {
-                const double h = std::pow(10.0, -6.0 + 4.0 * unit());
-                const Vec3 o(20.0 * unit() - 10.0, h, 20.0 * unit() - 10.0);
+                const double h = std::pow(10.0, -6.0 + 4.0 * g.unit());
+                const Vec3 o(20.0 * g.unit() - 10.0, h, 20.0 * g.unit() - 10.0);
                 Vec3 d = randomDirection(g);
                 if (d.y > 0) d.y = -d.y;
                 out.push_back({{o, d}, s});
@@ -275,7 +274,7 @@ std::vector<IntersectionRow> compareIntersections(int raysPerCase, std::uint64_t
     std::vector<IntersectionRow> rows;
     const auto cases = intersectionCases();
     for (int c = 0; c < int(cases.size()); ++c) {
-        std::mt19937_64 g(seed + 7919 * std::uint64_t(c));
+        Random g(seed + 7919 * std::uint64_t(c));
         const std::vector<Probe> probes = makeCase(c, g, raysPerCase);
         std::vector<LD> ref;
         for (const Probe& p : probes) ref.push_back(preciseSphereHit(p.ray, p.sphere, Start::Elsewhere));

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "analysis/median.h"
 #include "study/precise_intersection.h"
 
 namespace rc {
@@ -75,69 +76,72 @@ SceneStability checkStability(const StiffScene& s, int depth) {
     out.objects = s.scene->size();
     std::vector<Vec3> reference;
     std::vector<std::uint8_t> nan, inf, differ;
-    for (CacheKind cache : allCacheKinds()) {
-        for (OrderKind order : {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst}) {
-            RenderOptions o;
-            o.cache = cache;
-            o.order = order;
-            o.shading.maxDepth = depth;
-            o.verify = cache != CacheKind::None;
-            RenderSession session(s.scene, o);
-            const int pixels = session.width() * session.height();
-            if (nan.empty()) {
-                out.width = session.width();
-                out.height = session.height();
-                nan.assign(pixels, 0);
-                inf.assign(pixels, 0);
-                differ.assign(pixels, 0);
-            }
-            NonFiniteProbe finiteProbe(pixels);
-            PrecisionProbe precision(*s.scene, pixels);
-            session.addSink(&finiteProbe);
-            const bool first = reference.empty();
-            if (first) session.addSink(&precision);
-            const auto start = std::chrono::steady_clock::now();
-            session.run();
-            StabilityRun run;
-            run.cache = cache;
-            run.order = order;
-            run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const Counters& n = session.counters();
-            run.rays = n.totalRays();
-            run.intersectionTests = n.intersectionTests;
-            run.completeSearches = n.completeSearches;
-            run.disagreements = n.verifyDisagreements;
-            for (int p = 0; p < pixels; ++p) {
-                const Vec3 v = session.image().value(p);
-                // A NaN or infinity summed in fixed point shows up as a wild value
-                if (!finite(v) || std::abs(v.x) + std::abs(v.y) + std::abs(v.z) > 1e6) {
-                    ++run.nonFinitePixels;
-                    inf[p] |= !finiteProbe.nan[p];
+    for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
+        for (CacheKind cache : allCacheKinds()) {
+            for (OrderKind order : {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst}) {
+                RenderOptions o;
+                o.accel = accel;
+                o.cache = cache;
+                o.order = order;
+                o.shading.maxDepth = depth;
+                o.verify = cache != CacheKind::None;
+                RenderSession session(s.scene, o);
+                const int pixels = session.width() * session.height();
+                if (nan.empty()) {
+                    out.width = session.width();
+                    out.height = session.height();
+                    nan.assign(pixels, 0);
+                    inf.assign(pixels, 0);
+                    differ.assign(pixels, 0);
                 }
-                nan[p] |= finiteProbe.nan[p];
-                inf[p] |= finiteProbe.inf[p];
+                NonFiniteProbe finiteProbe(pixels);
+                PrecisionProbe precision(*s.scene, pixels);
+                session.addSink(&finiteProbe);
+                const bool first = reference.empty();
+                if (first) session.addSink(&precision);
+                const auto start = std::chrono::steady_clock::now();
+                session.run();
+                StabilityRun run;
+                run.accel = accel;
+                run.cache = cache;
+                run.order = order;
+                run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                const Counters& n = session.counters();
+                run.rays = n.totalRays();
+                run.intersectionTests = n.intersectionTests;
+                run.completeSearches = n.completeSearches;
+                run.disagreements = n.verifyDisagreements;
+                for (int p = 0; p < pixels; ++p) {
+                    const Vec3 v = session.image().value(p);
+                    // A NaN or infinity summed in fixed point shows up as a wild value
+                    if (!finite(v) || std::abs(v.x) + std::abs(v.y) + std::abs(v.z) > 1e6) {
+                        ++run.nonFinitePixels;
+                        inf[p] |= !finiteProbe.nan[p];
+                    }
+                    nan[p] |= finiteProbe.nan[p];
+                    inf[p] |= finiteProbe.inf[p];
+                    if (first) {
+                        reference.push_back(v);
+                    } else if (!(v == reference[p])) {
+                        ++run.differingPixels;
+                        differ[p] = 1;
+                    }
+                }
                 if (first) {
-                    reference.push_back(v);
-                } else if (!(v == reference[p])) {
-                    ++run.differingPixels;
-                    differ[p] = 1;
+                    std::vector<double>& e = precision.errors;
+                    out.hitsChecked = e.size() + precision.flips;
+                    out.hitFlips = precision.flips;
+                    if (!e.empty()) {
+                        out.maxRelTError = *std::max_element(e.begin(), e.end());
+                        out.medianRelTError = median(e);
+                    }
+                    out.acneRays = precision.acneRays;
+                    out.acnePixels = std::count(precision.acne.begin(), precision.acne.end(), 1);
                 }
+                out.disagreements += run.disagreements;
+                out.seconds += run.seconds;
+                out.runs.push_back(run);
             }
-            if (first) {
-                std::vector<double>& e = precision.errors;
-                out.hitsChecked = e.size() + precision.flips;
-                out.hitFlips = precision.flips;
-                if (!e.empty()) {
-                    std::sort(e.begin(), e.end());
-                    out.maxRelTError = e.back();
-                    out.medianRelTError = e[e.size() / 2];
-                }
-                out.acneRays = precision.acneRays;
-                out.acnePixels = std::count(precision.acne.begin(), precision.acne.end(), 1);
-            }
-            out.disagreements += run.disagreements;
-            out.seconds += run.seconds;
-            out.runs.push_back(run);
         }
     }
     out.nanPixels = std::count(nan.begin(), nan.end(), 1);

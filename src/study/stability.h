@@ -12,8 +12,9 @@
 
 namespace rc {
 
-/// One render of the scene with one cache and order.
+/// One render of the scene with one complete search, cache and order.
 struct StabilityRun {
+    AccelKind accel = AccelKind::Linear;  ///< the complete search
     CacheKind cache = CacheKind::None;
     OrderKind order = OrderKind::Scanline;
     double seconds = 0;
@@ -21,7 +22,7 @@ struct StabilityRun {
     std::uint64_t intersectionTests = 0;
     std::uint64_t completeSearches = 0;
     std::uint64_t disagreements = 0;    ///< answers unlike the complete search's (--verify)
-    std::int64_t differingPixels = 0;   ///< against none/scanline, exactly
+    std::int64_t differingPixels = 0;   ///< against linear/none/scanline, exactly
     std::int64_t nonFinitePixels = 0;
 };
 
@@ -50,8 +51,8 @@ struct SceneStability {
     bool ok() const { return nanPixels == 0 && infPixels == 0 && disagreements == 0 && differingPixels == 0; }
 };
 
-/// Renders `s` with every cache (none, cylinder, blocker) and order (scanline,
-/// progressive, bfs), cached runs with verify on.
+/// Renders `s` in front of every complete search (linear, grid, bvh) with every cache
+/// and order (scanline, progressive, bfs), cached runs with verify on.
 SceneStability checkStability(const StiffScene& s, int depth = 5);
 
 }  // namespace rc

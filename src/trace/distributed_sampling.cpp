@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -10,7 +11,6 @@
 namespace rc {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 /// Two unit vectors that make a right-handed frame with unit `w`.
 void frame(const Vec3& w, Vec3& u, Vec3& v) {
     const Vec3 a = std::abs(w.x) < 0.6 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
@@ -73,7 +73,7 @@ Vec3 lightSample(const Light& light, const Vec3& p, std::uint64_t key) {
     Vec3 u, v;
     frame(w, u, v);
     const double r = light.radius * std::sqrt(hashedUnit(key, 0));
-    const double phi = 2.0 * kPi * hashedUnit(key, 1);
+    const double phi = 2.0 * std::numbers::pi * hashedUnit(key, 1);
     return light.position + r * (std::cos(phi) * u + std::sin(phi) * v);
     // [light-sample]
 }
@@ -83,7 +83,7 @@ Vec3 coneSample(const Vec3& axis, double halfAngle, std::uint64_t key) {
     // cos(theta) uniform in [cos(alpha), 1]: uniform in solid angle over the cone
     const double cosT = 1.0 - hashedUnit(key, 0) * (1.0 - std::cos(halfAngle));
     const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
-    const double phi = 2.0 * kPi * hashedUnit(key, 1);
+    const double phi = 2.0 * std::numbers::pi * hashedUnit(key, 1);
     Vec3 u, v;
     frame(axis, u, v);
     return glm::normalize(cosT * axis + sinT * (std::cos(phi) * u + std::sin(phi) * v));

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
+
+#include "trace/fresnel.h"
 
 namespace rc {
 
@@ -56,8 +59,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
     };
     // A child names its step; the render finds its path in the cache tree. It is built
     // where it is kept, field by field: a task built aside and copied in is read back in
-    // wide loads from narrow stores still in flight, which stalls (measured with perf:
-    // two fifths of shade's time). So is a Ray built aside
+    // wide loads from narrow stores still in flight, which stalls. So is a Ray built aside
     auto spawn = [&](RayKind kind, int light, int sample, const Vec3& d, double tmax,
                      const Vec3& weight) -> RayTask& {
         RayTask& c = children.emplace_back();
@@ -111,16 +113,24 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
 
     // [shade-spawn]
     if (task.depth >= opt.maxDepth) return;
-    // Reflection, weighted by Ks
-    const Vec3 wr = task.weight * m.ks;
-    if (m.ks > 0.0 && maxComponent(wr) >= opt.cutoff && maxComponent(wr) > 0.0) {
+    // A transmitter is a dielectric: its boundary reflects what Fresnel's equations give
+    // and lets the rest of Kt through, nothing beyond the critical angle
+    const bool entering = glm::dot(q.ray.d, outward) < 0.0;
+    const double fresnel = m.kt > 0.0 ? fresnelDielectric(-glm::dot(q.ray.d, n), entering ? 1.0 : m.ior,
+                                                          entering ? m.ior : 1.0)
+                                      : 0.0;
+    // Reflection, weighted by Ks, or by Fresnel where that is larger: every transmitter
+    // also reflects (SPD's rules 8 and 9)
+    const double kr = std::max(m.ks, fresnel);
+    const Vec3 wr = task.weight * kr;
+    if (kr > 0.0 && maxComponent(wr) >= opt.cutoff && maxComponent(wr) > 0.0) {
         const Vec3 mirror = glm::normalize(glm::reflect(q.ray.d, n));
         if (!(sampling.glossDegrees > 0.0)) {
             spawn(RayKind::Reflection, -1, 0, mirror, kNoHit, wr);
         } else {
             // Glossy: K directions in the cone around the mirror direction, each 1/K of
             // the weight; one that dips under the surface is mirrored back above it
-            const double halfAngle = sampling.glossDegrees * 3.14159265358979323846 / 180.0;
+            const double halfAngle = sampling.glossDegrees * std::numbers::pi / 180.0;
             const int samples = sampling.glossSamples;
             for (int j = 0; j < samples; ++j) {
                 Vec3 d = coneSample(mirror, halfAngle, childKey(task.key, RayKind::Reflection, -1, j));
@@ -130,16 +140,15 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
             }
         }
     }
-    // Refraction, weighted by Kt; total internal reflection turns it back inside
-    const Vec3 wt = task.weight * m.kt;
-    if (m.kt > 0.0 && maxComponent(wt) >= opt.cutoff && maxComponent(wt) > 0.0) {
-        Vec3 d = q.ray.d;  // a polygon or a cone is a thin sheet: straight through
+    // Refraction, weighted by the part of Kt that the boundary lets through (Snell's law
+    // bends it into a sphere; a polygon or a cone is a thin sheet: straight through)
+    const Vec3 wt = task.weight * (m.kt * (1.0 - fresnel));
+    if (m.kt > 0.0 && fresnel < 1.0 && maxComponent(wt) >= opt.cutoff && maxComponent(wt) > 0.0) {
+        Vec3 d = q.ray.d;
         if (sphere) {
-            const bool entering = glm::dot(q.ray.d, outward) < 0.0;
-            const double eta = entering ? 1.0 / m.ior : m.ior;
-            const Vec3 refracted = glm::refract(q.ray.d, n, eta);
-            d = glm::dot(refracted, refracted) > 0.0 ? glm::normalize(refracted)
-                                                     : glm::normalize(glm::reflect(q.ray.d, n));
+            const Vec3 refracted = glm::refract(q.ray.d, n, entering ? 1.0 / m.ior : m.ior);
+            if (!(glm::dot(refracted, refracted) > 0.0)) return;  // grazing the critical angle
+            d = glm::normalize(refracted);
         }
         spawn(RayKind::Refraction, -1, 0, d, kNoHit, wt);
     }

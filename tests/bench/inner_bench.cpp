@@ -6,7 +6,6 @@
 #define CATCH_CONFIG_ENABLE_BENCHMARKING
 #include <catch2/catch.hpp>
 
-#include <random>
 
 #include <glm/geometric.hpp>
 
@@ -16,13 +15,14 @@
 #include "scene/builtin_scenes.h"
 #include "search/accelerator.h"
 #include "search/cache_strategy.h"
+#include "../uniform.h"
 
 using namespace rc;
 
 namespace {
 std::vector<Ray> randomRays(int n, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> g;
+    Random rng(seed);
+    const Uniform g{-1.0, 1.0};
     std::vector<Ray> rays;
     for (int i = 0; i < n; ++i)
         rays.push_back({Vec3(g(rng), g(rng), 5.0 + g(rng)), glm::normalize(Vec3(0.3 * g(rng), 0.3 * g(rng), -1.0))});
@@ -46,8 +46,8 @@ TEST_CASE("sphere intersection", "[sphere]") {
 }
 
 TEST_CASE("hull and capsule tests", "[hull]") {
-    std::mt19937_64 rng(2);
-    std::uniform_real_distribution<double> u(-3, 3);
+    Random rng(2);
+    const Uniform u{-3, 3};
     std::vector<Vec3> points;
     for (int i = 0; i < 1024; ++i) points.emplace_back(u(rng), u(rng), u(rng));
     const Sphere a{Vec3(-1, 0, 0), 1.0}, b{Vec3(2, 0.5, 0), 0.3};

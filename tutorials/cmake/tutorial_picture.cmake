@@ -1,8 +1,10 @@
 # Runs one tutorial program (a solution, or a recorded wrong answer, which fails its check:
 # its exit code is ignored here) with TUTORIAL_PICTURE_DIR=DIR, then either copies the
-# picture it drew to DEST (MODE=update) or fails unless it equals DEST byte for byte
-# (MODE=check: the committed picture is the one the code draws today).
-#   cmake -DPROGRAM=... -DPICTURE=<name of the PNG it writes> -DDIR=... -DDEST=... -DMODE=update|check -P
+# picture it drew to DEST (MODE=update) or fails unless it shows the same pixels as DEST
+# (MODE=check, decoded by SAME_PIXELS: the committed picture is the one the code draws
+# today, whatever zlib compressed it).
+#   cmake -DPROGRAM=... -DPICTURE=<name of the PNG it writes> -DDIR=... -DDEST=... -DMODE=update|check
+#         [-DSAME_PIXELS=<same_pixels program>] -P
 file(REMOVE ${DIR}/${PICTURE})
 execute_process(COMMAND ${CMAKE_COMMAND} -E env TUTORIAL_PICTURE_DIR=${DIR} ${PROGRAM}
                 OUTPUT_QUIET ERROR_QUIET RESULT_VARIABLE result)
@@ -13,7 +15,7 @@ if(MODE STREQUAL "update")
   file(COPY_FILE ${DIR}/${PICTURE} ${DEST})
   message(STATUS "${DEST}")
 else()
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DIR}/${PICTURE} ${DEST} RESULT_VARIABLE differs)
+  execute_process(COMMAND ${SAME_PIXELS} ${DIR}/${PICTURE} ${DEST} RESULT_VARIABLE differs)
   if(differs)
     message(FATAL_ERROR "${DEST} is not what ${PROGRAM} draws today (${DIR}/${PICTURE}): "
                         "run `cmake --build build --target tutorial-pictures` and commit the pictures")

@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// \brief How near a segment comes to the objects: the radius of a cylinder of safety.
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "search/sphere_cull.h"
+
+namespace rc {
+
+/// How near segment a-b comes to a sphere (less its radius: a lower bound for any sphere
+/// inside), every object but two kept under the limit: a cylinder of safety's radius. It
+/// is `final`, so a traversal that knows its type calls it directly, without a virtual
+/// call per sphere (CompleteSearch::clearance).
+struct SegmentClearance final : SphereCull {
+    /// `stopBelow`: once an object lies nearer than this, stop; `least` is then its distance
+    SegmentClearance(const Vec3& from, const Vec3& to, int skip, int skipToo, double cap, double stopBelow)
+        : ab(to - from), skip(skip), skipToo(skipToo), stopBelow(stopBelow), least(cap) {
+        a = from;
+        b = to;
+        const double len2 = glm::dot(ab, ab);
+        invLen2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+        radius = limit = cap;
+    }
+    double distance(const Sphere& s) override {
+        const Vec3 p = s.c - a;
+        const double t = std::clamp(glm::dot(p, ab) * invLen2, 0.0, 1.0);
+        return glm::length(p - t * ab) - s.r;
+    }
+    void found(int id, double d) override {
+        if (id == skip || id == skipToo || !(d < least)) return;
+        least = d;
+        nearest = id;
+        // Below the stop, the search is over: nothing more can meet the limit
+        limit = least < stopBelow ? -kNoHit : least;
+    }
+    Vec3 ab;
+    double invLen2;
+    int skip, skipToo;
+    double stopBelow;
+    double least;      ///< the clearance so far (at most the cap)
+    int nearest = -1;  ///< the object at that distance (-1: none nearer than the cap)
+};
+
+}  // namespace rc
