@@ -1,5 +1,6 @@
 // Tutorial 01's check: tutorial::nearestHit against the library's complete search,
 // rc::LinearSearch, on seeded random scenes and rays.
+#include <iomanip>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -55,8 +56,11 @@ TEST_CASE("nearestHit agrees with the complete search on random scenes", "[tutor
             rc::Counters n;
             const rc::Answer want = search.nearest(q, n);
             const rc::Answer got = tutorial::nearestHit(s, q);
-            INFO("scene " << scene << " ray " << i << ": origin (" << q.ray.o.x << ", " << q.ray.o.y << ", "
-                          << q.ray.o.z << ") from object " << q.origin.object);
+            INFO(std::setprecision(17) << "scene " << scene << " ray " << i << ": origin (" << q.ray.o.x << ", " << q.ray.o.y << ", "
+                          << q.ray.o.z << ") direction (" << q.ray.d.x << ", " << q.ray.d.y << ", " << q.ray.d.z
+                          << ") from object " << q.origin.object << (q.origin.inside ? " (inside it)" : " (outside it)")
+                          << ", tmax " << q.tmax << ": the complete search finds object " << want.object << " at t = "
+                          << want.t << ", yours object " << got.object << " at t = " << got.t);
             REQUIRE(got.object == want.object);
             REQUIRE(got.t == want.t);  // the same routine on the same sphere: bit for bit
             hits += want.object >= 0;
@@ -92,14 +96,17 @@ TEST_CASE("nearestHit finds what the eye sees in cube:3", "[tutorial01]") {
         }
     const std::string path = pic.save("cube3", 6);
     tutorial::announcePicture("what your search sees in cube:3; magenta: " + std::to_string(wrong) + " wrong pixel(s)", path);
-    INFO("your picture of cube:3, wrong pixels in magenta: " << path);
+    INFO(std::setprecision(17) << "your picture of cube:3, wrong pixels in magenta: " << path);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             rc::Query q;
             q.ray = camera.primary(x, y);
             rc::Counters n;
             const rc::Answer want = search.nearest(q, n);
-            INFO("pixel (" << x << ", " << y << ")");
-            REQUIRE(tutorial::nearestHit(s, q) == want);
+            const rc::Answer got = tutorial::nearestHit(s, q);
+            INFO(std::setprecision(17) << "pixel (" << x << ", " << y << "): the complete search finds object "
+                                       << want.object << " at t = " << want.t << ", yours object " << got.object
+                                       << " at t = " << got.t);
+            REQUIRE(got == want);
         }
 }
