@@ -60,9 +60,9 @@ def table(head, rows, note=None):
 
 
 def command(scene, *args):
-    # (&#45;&#45;: Doxygen would print -- as a dash)
+    # (\--: Doxygen would print -- as a dash)
     text = "raycache render " + " ".join([scene, *args]) + " --stats s.json"
-    return "<tt>" + text.replace("--", "&#45;&#45;") + "</tt>"
+    return "<tt>" + text.replace("--", "\\--") + "</tt>"
 
 
 def write(name, text):
@@ -120,7 +120,7 @@ md.append(table(["configuration", "<tt>flushed</tt>", "<tt>origin_changed</tt>",
 rows = []
 for band in ("1", "8", "0"):
     s = render("cube:4", "--cache", "blocker", "--order", "bfs", "--band", band, *SIZE)
-    rows.append([f"<tt>&#45;&#45;band {band}</tt>" + (" (whole image)" if band == "0" else " (default)" if band == "8" else ""),
+    rows.append([f"<tt>\\--band {band}</tt>" + (" (whole image)" if band == "0" else " (default)" if band == "8" else ""),
                  n(s["complete_searches"]), f"{s['complete_searches_per_beam']:.3f}", n(s["regions"]),
                  n(s["cache"]["deferrals"]), n(s["queue_peak"]), n(s["intersection_tests"])])
 md.append("<div style=\"margin-top: 1em\"><b>Deferral and bands</b> (" +
