@@ -156,7 +156,8 @@ md.append(table(HEAD, rows,
                 "<i>Gain</i> = scanline's figure divided by breadth-first's (above 1: breadth-first does "
                 "better). Scanline's searches per beam is also the most a fill could gain in searches if it "
                 "made exactly one complete search per beam. Times are "
-                "medians of three renders each, with <tt>--stats</tt>, on the machine that built these pages."))
+                "medians of three renders each, with <tt>\\--stats</tt>, on the machine that built these pages: "
+                "on a shared machine they vary from build to build, the counts do not."))
 out = subprocess.run([beam_sizes, "cube:4", "512", "512", "5"], check=True, capture_output=True, text=True).stdout
 sizes = list(csv.DictReader(io.StringIO(out)))
 classes = ["1", "2-3", "4-15", "16-63", "64-255", "256+"]
@@ -166,7 +167,9 @@ for r in sizes:
     rows.append([f"depth {r['depth']}", n(int(r["beams"])), n(rays), f"{rays / int(r['beams']):.1f}"] +
                 [f"{n(int(r['beams ' + c]))} ({100.0 * int(r['rays ' + c]) / rays:.0f}%)" for c in classes])
 md.append("<div style=\"margin-top: 1em\"><b>Beam sizes</b> (cube:4 at 512 by 512, depth 5: the beams of every "
-          "ray-tree path of each depth, by the rays they hold; <tt>docs/tools/beam_sizes.cpp</tt>)</div>\n")
+          "ray-tree path of each depth, by the rays they hold; a path's depth counts its shadow rays one below the "
+          "ray whose hit spawned them, so depth 1 is the eye rays alone and depth 6 the shadow rays of depth-5 "
+          "hits; <tt>docs/tools/beam_sizes.cpp</tt>)</div>\n")
 md.append(table(["", "beams", "rays", "rays per beam"] + [f"beams of {c} rays (their share of the rays)" for c in classes],
                 rows))
 write("bfs_gain_measured.md", "\n".join(md))
