@@ -12,6 +12,10 @@
 int main(int argc, char* argv[]) {
     // Pictures are named after the program: tutorial_03_exercise-hull.png, ...
     if (argc > 0) tutorial::programName = std::filesystem::path(argv[0]).filename().string();
+    // Every value a failed check prints, at full precision: two doubles that differ in the
+    // last place must not look alike
+    Catch::StringMaker<double>::precision = 17;
+    Catch::StringMaker<float>::precision = 9;
     const int failed = Catch::Session().run(argc, argv);
     if (failed == 0) {
         std::printf("\nSOLVED: every check passes.\n");

@@ -7,9 +7,10 @@
 
 namespace rc {
 
-/// "If each ray is immediately painted onto the image after it is traced, then ... first
-/// the hidden surface view will be drawn, followed by reflections and shadows at greater
-/// and greater depth" (Hanrahan 1986). A FIFO over the ray trees of a band of scanlines.
+/// "If each ray is immediately painted onto the image after it is traced, then the details
+/// of the image will gradually be filled in. First, the a hidden surface view will be drawn,
+/// followed by reflections and shadows at greater and greater depth" (Hanrahan 1986, its
+/// words, "the a" included). A FIFO over the ray trees of a band of scanlines.
 class ProgressiveOrder final : public RayOrder {
 public:
     /// Scanlines [rowBegin, rowEnd), `band` at a time (0: all).

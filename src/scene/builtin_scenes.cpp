@@ -162,6 +162,7 @@ Scene makePair() {
     return s;
 }
 
+// [trio-scene]
 /// The paper's Figure 2 with its blocker: a ray reflects off the big mirror sphere and
 /// hits the small one, and a third sphere lies in the hull between the two, off the
 /// reflected rays' way: the one potential blocker on their list.
@@ -185,6 +186,7 @@ Scene makeTrio() {
     s.finalize();
     return s;
 }
+// [trio-scene]
 
 /// The N of `prefix:N` (a whole number from 1 to `max`, nothing around it).
 /// \throws SceneError naming `what` and giving `usage`

@@ -11,14 +11,19 @@ namespace rc {
 
 /// Hanrahan (1986): the cache holds the last object hit; a ray hits the cache when it
 /// hits that object and none of the potential blockers between its origin and that
-/// object. Shadow rays are answered from the list of the hull of their origin and their
-/// light (the cone from the light), which holds every object that could stand in the
-/// way, so they never need a complete search.
+/// object.
 ///
 /// Three variants share this code:
-/// - `Variant::Paper` (`--cache blocker`) is the paper's algorithm and nothing more:
-///   every list entry is tested, and rays that hit nothing keep the Speer-DeRose-Barsky
-///   cylinder of safety, as the paper prescribes.
+/// - `Variant::Paper` (`--cache blocker`) is the paper's cache as RayCache reads it: every
+///   list entry is tested, and rays that hit nothing keep the Speer-DeRose-Barsky
+///   cylinder of safety, as the paper prescribes. Four readings are RayCache's, not the
+///   paper's text, each exact: a ray that hits a listed blocker first is answered by that
+///   blocker, without a complete search (the paper: "Each cache miss causes all the
+///   objects to be searched"); a shadow ray is answered by testing the list of the hull of
+///   its origin and its light (the cone from the light), without a complete search;
+///   lists are kept per (origin, target) pair and shared by every path and pixel; and
+///   they are found through a hierarchy of bounding spheres, with `--accel linear` too
+///   (LinearSearch).
 /// - `Variant::Plus` (`--cache blocker+`) adds RayCache's improvements, each exact:
 ///   lists kept nearest first and left early once a nearer hit is known; rays that hit
 ///   nothing keep the cone of directions around the last such ray that no object's

@@ -5,7 +5,8 @@
 /// Any segment from a point of the origin (the eye, a light, or an object's bounding
 /// sphere) to a point of the target lies in the convex hull of the two, so only objects
 /// whose bounding spheres meet that hull can block it. A list is built the first time a
-/// pair is met and kept: no O(n^3) precomputation.
+/// pair is met and kept, with no precomputation (the paper: "the naive algorithm to do
+/// this is of O(n^3)").
 #include <cstdint>
 #include <deque>
 #include <vector>

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// \brief The three interchangeable answers to "what does this ray hit first?": no cache,
-/// the Speer-DeRose-Barsky cylinder of safety, and Hanrahan's blocker lists.
+/// \brief The interchangeable answers to "what does this ray hit first?": no cache, the
+/// Speer-DeRose-Barsky cylinder of safety, Hanrahan's blocker lists, and RayCache's two
+/// extensions of them (blocker+ and blocker+dir).
 #include <array>
 #include <memory>
 #include <optional>
@@ -18,7 +19,7 @@ namespace rc {
 enum class CacheKind {
     None,         ///< every ray searches
     Cylinder,     ///< Speer, DeRose and Barsky's cylinder of safety
-    Blocker,      ///< Hanrahan's blocker lists, exactly as the paper describes them
+    Blocker,      ///< Hanrahan's blocker lists, with RayCache's readings of the paper (BlockerCache)
     BlockerPlus,  ///< blocker lists with RayCache's additions (`blocker+`)
     BlockerDirections,  ///< blocker+ whose misses test the objects listed in their direction (`blocker+dir`)
 };

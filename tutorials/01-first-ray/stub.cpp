@@ -5,9 +5,9 @@
 namespace tutorial {
 
 // [stub]
-rc::Answer nearestHit([[maybe_unused]] const rc::Scene& scene, [[maybe_unused]] const rc::Query& q) {
+Answer nearestHit([[maybe_unused]] const rc::Scene& scene, [[maybe_unused]] const Query& q) {
     // TODO: test every object of the scene and keep the nearest hit.
-    return rc::Answer{};  // "hits nothing": right for rays into the background only
+    return Answer{};  // "hits nothing": right for rays into the background only
 }
 // [stub]
 

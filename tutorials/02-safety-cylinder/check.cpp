@@ -1,6 +1,7 @@
 // Tutorial 02's check: tutorial::segmentDistance against rc::segmentDistance,
 // tutorial::insideCapsule against rc::SafetyCylinder::contains, and tutorial::safetyRadius
 // against the gap to the nearest other sphere, on random cases and on cube:4's eye rays.
+#include <iomanip>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -31,7 +32,7 @@ TEST_CASE("segmentDistance agrees with the library's on random points and segmen
         const rc::Vec3 b = i % 10 == 0 ? a : a + scale * rnd.logUniform(-4.0, 0.5) * rnd.direction();
         const rc::Vec3 p = scale * rnd.inBox(2.0);
         const double want = rc::segmentDistance(p, a, b);
-        INFO("case " << i << ": scale " << scale << ", expected " << want);
+        INFO(std::setprecision(17) << "case " << i << ": scale " << scale << ", expected " << want);
         REQUIRE(std::abs(tutorial::segmentDistance(p, a, b) - want) <= closeEnough(scale));
     }
 }
@@ -53,7 +54,7 @@ TEST_CASE("insideCapsule holds what rc::SafetyCylinder holds", "[tutorial02]") {
         const double dq = rc::segmentDistance(q, cyl.a, cyl.b) - cyl.radius;
         if (std::abs(dp) < 1e-6 || std::abs(dq) < 1e-6) continue;
         const bool want = cyl.contains(p, q);
-        INFO("case " << i << ": capsule radius " << cyl.radius << " around a segment of length "
+        INFO(std::setprecision(17) << "case " << i << ": capsule radius " << cyl.radius << " around a segment of length "
                      << glm::length(cyl.b - cyl.a) << "; p is " << (dp <= 0 ? "inside" : "outside")
                      << ", q is " << (dq <= 0 ? "inside" : "outside") << "; expected "
                      << (want ? "inside" : "not inside"));
@@ -87,7 +88,7 @@ TEST_CASE("safetyRadius is the gap to the nearest other sphere", "[tutorial02]")
         const int hit = rnd.index(int(spheres.size()));
         const rc::Vec3 a = rnd.inBox(6.0), b = i % 7 == 0 ? a : rnd.inBox(6.0);
         const double want = gap(spheres, hit, a, b), got = tutorial::safetyRadius(spheres, hit, a, b);
-        INFO("case " << i << ": " << spheres.size() << " spheres, the ray hit sphere " << hit << "; expected radius "
+        INFO(std::setprecision(17) << "case " << i << ": " << spheres.size() << " spheres, the ray hit sphere " << hit << "; expected radius "
                      << want << ", yours " << got
                      << (spheres.size() == 1 ? " (no other sphere: nothing limits the capsule)" : ""));
         if (std::isinf(want))
@@ -134,7 +135,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
                                       std::to_string(wrong) + " pixel(s) answered differently from the library",
                                   picture);
     }
-    INFO("your cylinders on cube:4 (magenta: answered differently from the library): " << picture);
+    INFO(std::setprecision(17) << "your cylinders on cube:4 (magenta: answered differently from the library): " << picture);
     int hits = 0, tested = 0;
     for (int p = 0; p + 1 < n * n; ++p) {
         rc::Query q;
@@ -145,7 +146,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
         const rc::Vec3 h = q.ray.at(hit.t);
         const double want = gap(spheres, hit.object, q.ray.o, h);
         const double mine = tutorial::safetyRadius(spheres, hit.object, q.ray.o, h);
-        INFO("pixel (" << p % n << ", " << p / n << "): expected radius " << want << ", yours " << mine);
+        INFO(std::setprecision(17) << "pixel (" << p % n << ", " << p / n << "): expected radius " << want << ", yours " << mine);
         REQUIRE(std::abs(mine - want) <= closeEnough(20.0));
         // The next pixel's ray, to the same sphere: would the cylinder answer it?
         rc::Query next;
@@ -156,7 +157,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
         const rc::SafetyCylinder cyl{q.ray.o, h, want};
         const double d2 = rc::segmentDistance(h2, q.ray.o, h) - want;
         if (std::abs(d2) < 1e-9) continue;
-        INFO("the next pixel's segment to the same sphere");
+        INFO(std::setprecision(17) << "the next pixel's segment to the same sphere");
         REQUIRE(tutorial::insideCapsule(next.ray.o, h2, q.ray.o, h, mine) == cyl.contains(next.ray.o, h2));
         hits += cyl.contains(next.ray.o, h2);
         ++tested;

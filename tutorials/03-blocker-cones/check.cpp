@@ -1,5 +1,6 @@
 // Tutorial 03's check: tutorial::hullDistance against rc::hullDistance, and the blocker
 // lists built with it against the library's rc::BlockerLists.
+#include <iomanip>
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -84,7 +85,7 @@ std::string drawHull() {
 constexpr double kMaxExtraFactor = 1.5;
 
 TEST_CASE("hullDistance never puts a point of the hull outside it", "[tutorial03]") {
-    INFO("your hull in a slice through its axis (magenta: left out): " << drawHull());
+    INFO(std::setprecision(17) << "your hull in a slice through its axis (magenta: left out): " << drawHull());
     tutorial::Random rnd(1986);
     int outside = 0, inside = 0, inexact = 0;
     for (int i = 0; i < 50000; ++i) {
@@ -96,18 +97,18 @@ TEST_CASE("hullDistance never puts a point of the hull outside it", "[tutorial03
                                        rnd.uniform(0.0, 1.5) * std::max(a.r, b.r) * rnd.direction();
         const double want = rc::hullDistance(p, a, b);
         const double got = tutorial::hullDistance(p, a, b);
-        INFO("case " << i << ": a = (" << a.c.x << ", " << a.c.y << ", " << a.c.z << ") r " << a.r << ", b = ("
+        INFO(std::setprecision(17) << "case " << i << ": a = (" << a.c.x << ", " << a.c.y << ", " << a.c.z << ") r " << a.r << ", b = ("
                      << b.c.x << ", " << b.c.y << ", " << b.c.z << ") r " << b.r << "; p = (" << p.x << ", " << p.y
                      << ", " << p.z << "); expected " << want << ", got " << got);
         if (want > 1e-9) {
             // Outside: the exact distance, or less (a larger hull: extra blockers, still
             // correct), never more (a sphere that meets the hull would be left out)
-            INFO("your distance is larger than the true one: a sphere this close would be left off the list");
+            INFO(std::setprecision(17) << "your distance is larger than the true one: a sphere this close would be left off the list");
             REQUIRE(got <= want + 1e-9 * std::max(1.0, want));
             inexact += got < want - 1e-9 * std::max(1.0, want);
             ++outside;
         } else if (want < -1e-9) {
-            INFO("this point is inside the hull, but your distance says outside");
+            INFO(std::setprecision(17) << "this point is inside the hull, but your distance says outside");
             REQUIRE(got <= 1e-9);
             ++inside;
         }
@@ -133,12 +134,12 @@ TEST_CASE("meetsHull decisions built on hullDistance keep every sphere that meet
         if (std::abs(margin) < 1e-7) continue;  // within rounding of touching
         const bool want = rc::meetsHull(s, a, b, 0.0);
         const bool mine = tutorial::hullDistance(s.c, a, b) <= s.r;
-        INFO("case " << i << ": a sphere that meets the hull, left out");
+        INFO(std::setprecision(17) << "case " << i << ": a sphere that meets the hull, left out");
         if (want) REQUIRE(mine);
         meets += want;
         extra += mine && !want;
     }
-    INFO("spheres that meet the hull: " << meets << "; extra spheres your hull takes in: " << extra);
+    INFO(std::setprecision(17) << "spheres that meet the hull: " << meets << "; extra spheres your hull takes in: " << extra);
     REQUIRE(extra <= (kMaxExtraFactor - 1.0) * meets);
 }
 
@@ -166,7 +167,7 @@ TEST_CASE("blocker lists of cube:4 built with hullDistance hold the library's", 
             std::sort(want.begin(), want.end());
             std::vector<int> missing;
             std::set_difference(want.begin(), want.end(), mine.begin(), mine.end(), std::back_inserter(missing));
-            INFO("origin site " << origin << ", target site " << target << ": your list leaves out "
+            INFO(std::setprecision(17) << "origin site " << origin << ", target site " << target << ": your list leaves out "
                                 << missing.size() << " potential blocker(s), the first is sphere "
                                 << (missing.empty() ? -1 : missing.front()));
             REQUIRE(missing.empty());
@@ -176,7 +177,7 @@ TEST_CASE("blocker lists of cube:4 built with hullDistance hold the library's", 
         }
     WARN("cube:4's blocker lists: the library's hold " << libraryTotal << " spheres, yours " << libraryTotal + extra
                                                         << " (" << extra << " extra)");
-    INFO("your lists hold " << extra << " extra spheres on top of the library's " << libraryTotal
+    INFO(std::setprecision(17) << "your lists hold " << extra << " extra spheres on top of the library's " << libraryTotal
                             << ": more than " << kMaxExtraFactor << " times as long, the cache loses its point");
     REQUIRE(double(libraryTotal + extra) <= kMaxExtraFactor * double(libraryTotal));
     CHECK(nonEmpty > 100);

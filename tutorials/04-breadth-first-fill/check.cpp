@@ -3,6 +3,7 @@
 // 4-neighbours, defer (not search) every pixel at a region's border, finish a band
 // before the next (the queue's bound), and start exactly as many regions as the
 // library's rc::BreadthFirstOrder does with the same bands.
+#include <iomanip>
 #include <climits>
 #include <algorithm>
 #include <cmath>
@@ -106,7 +107,7 @@ FillReport checkFill(int width, int height, int band, const std::vector<int>& ke
     };
     for (std::size_t i = 0; i < visits.size(); ++i) {
         const int p = visits[i].pixel;
-        INFO("visit " << i << " of " << visits.size());
+        INFO(std::setprecision(17) << "visit " << i << " of " << visits.size());
         if (p < 0 || p >= width * height) FAIL("pixel index " << p << " is outside the image");
         if (region[p] >= 0) fail("this pixel was already seeded or answered", p);
         if (bandOf(p) < currentBand) fail("this pixel belongs to a band that was already finished", p);
@@ -209,10 +210,10 @@ TEST_CASE("seedFill fills random images region by region, band by band", "[tutor
         const int width = 1 + rnd.index(40), height = 1 + rnd.index(40);
         const int band = i % 3 == 0 ? 0 : 1 + rnd.index(height);
         const std::vector<int> key = randomKeys(rnd, width, height);
-        INFO("image " << i << " (" << width << "x" << height << ", bands of " << band << " rows; 0: one band)");
+        INFO(std::setprecision(17) << "image " << i << " (" << width << "x" << height << ", bands of " << band << " rows; 0: one band)");
         const FillReport mine = checkFill(width, height, band, key, tutorial::seedFill(width, height, band, key));
         const long want = libraryRegions(width, height, band, key);
-        INFO("your fill seeded " << mine.regions << " regions, the library's breadth-first order " << want
+        INFO(std::setprecision(17) << "your fill seeded " << mine.regions << " regions, the library's breadth-first order " << want
                                  << ": one per 4-connected piece of equal key in each band");
         REQUIRE(mine.regions == want);
         deferrals += mine.deferrals;
@@ -233,9 +234,9 @@ TEST_CASE("seedFill makes one complete search per region of cube:3's eye rays", 
         key[p] = search.nearest(q, n).object;  // the sphere the eye ray hits, -1 for none
     }
     const std::string path = drawRegions(width, height, tutorial::seedFill(width, height, 8, key));
-    INFO("the regions of your fill in bands of 8 rows: " << path);
+    INFO(std::setprecision(17) << "the regions of your fill in bands of 8 rows: " << path);
     for (int band : {0, 8}) {
-        INFO("bands of " << band << " rows (0: one band)");
+        INFO(std::setprecision(17) << "bands of " << band << " rows (0: one band)");
         const FillReport mine = checkFill(width, height, band, key, tutorial::seedFill(width, height, band, key));
         REQUIRE(mine.regions == libraryRegions(width, height, band, key));
     }

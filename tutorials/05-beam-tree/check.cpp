@@ -1,5 +1,6 @@
 // Tutorial 05's check: tutorial::beamTree against the library's rc::BeamTreeBuilder, on
 // random path images and on the rays of real renders.
+#include <iomanip>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -31,6 +32,8 @@ rc::BeamTreeStats library(int width, int height, const std::vector<tutorial::Pat
 void compare(int width, int height, const std::vector<tutorial::PathImage>& paths) {
     const rc::BeamTreeStats want = library(width, height, paths);
     const tutorial::BeamStats got = tutorial::beamTree(width, height, paths);
+    INFO(std::setprecision(17) << "beams: the library's " << want.nodes << ", yours " << got.beams
+                               << "; coherence: the library's " << want.coherence << ", yours " << got.coherence);
     REQUIRE(got.beams == want.nodes);
     REQUIRE(std::abs(got.coherence - want.coherence) <= 1e-12 * want.coherence);
 }
@@ -141,7 +144,7 @@ TEST_CASE("beamTree agrees with rc::BeamTreeBuilder on random path images", "[tu
                     ray.hit = rnd.chance(0.9) ? (y * objects / height) - 1 : rnd.index(objects) - 1;
                 }
         }
-        INFO("image " << i << " (" << width << "x" << height << ", " << npaths << " paths)");
+        INFO(std::setprecision(17) << "image " << i << " (" << width << "x" << height << ", " << npaths << " paths)");
         compare(width, height, paths);
     }
 }
@@ -159,11 +162,11 @@ TEST_CASE("beamTree agrees with rc::BeamTreeBuilder on real renders", "[tutorial
         session.run();
         const rc::BeamTreeStats want = builder.build();
         const tutorial::BeamStats got = tutorial::beamTree(o.width, o.height, recorder.paths());
-        INFO("scene " << name);
-        if (std::string(name) == "cube:3") {
-            const std::string path = drawBeams(o.width, o.height, recorder.paths());
-            INFO("your beams of cube:3: " << path);
-        }
+        const std::string path =
+            std::string(name) == "cube:3" ? drawBeams(o.width, o.height, recorder.paths()) : std::string();
+        INFO(std::setprecision(17) << "scene " << name << ": beams: the library's " << want.nodes << ", yours "
+                                   << got.beams << "; coherence: the library's " << want.coherence << ", yours "
+                                   << got.coherence << (path.empty() ? "" : "; your beams of cube:3: " + path));
         REQUIRE(got.beams == want.nodes);
         REQUIRE(std::abs(got.coherence - want.coherence) <= 1e-12 * want.coherence);
     }

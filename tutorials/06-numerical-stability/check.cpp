@@ -1,5 +1,6 @@
 // Tutorial 06's check: tutorial::stableRoots against rc::sphereRootsStable, on ordinary
 // cases (where the textbook formula is fine too) and on stiff ones (where it is not).
+#include <iomanip>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -33,7 +34,7 @@ rc::Ray rayTowards(tutorial::Random& rnd, const rc::Sphere& s, double distance, 
 void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
     const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
     const rc::SphereRoots got = tutorial::stableRoots(ray, s);
-    INFO("sphere radius " << s.r << " at distance " << glm::length(s.c - ray.o) << ", aimed " << aim
+    INFO(std::setprecision(17) << "sphere radius " << s.r << " at distance " << glm::length(s.c - ray.o) << ", aimed " << aim
                           << " radii off centre; library: hit " << want.hit << " t0 " << want.t0 << " t1 "
                           << want.t1 << "; yours: hit " << got.hit << " t0 " << got.t0 << " t1 " << got.t1);
     // Near tangency either answer is defensible; elsewhere the hit must agree
@@ -102,7 +103,7 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
         const rc::Ray ray{o, glm::normalize(c + 0.5 * r * rnd.direction() - o)};
         const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
         const rc::SphereRoots got = tutorial::stableRoots(ray, s);
-        INFO("sphere radius " << r << ", origin " << std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - r
+        INFO(std::setprecision(17) << "sphere radius " << r << ", origin " << std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - r
                               << " outside it; library t0 " << want.t0 << ", yours " << got.t0 << " (relative error "
                               << std::abs(got.t0 - want.t0) / want.t0 << ")");
         REQUIRE(want.hit);
@@ -148,6 +149,6 @@ TEST_CASE("far.nff drawn with your roots matches the stable roots", "[tutorial06
         }
     const std::string path = pic.save("far", 6);
     tutorial::announcePicture("far.nff with your roots: " + std::to_string(wrong) + " pixel(s) hit differently", path);
-    INFO(wrong << " pixel(s) of far.nff hit a different sphere (or none) with your roots: see " << path);
+    INFO(std::setprecision(17) << wrong << " pixel(s) of far.nff hit a different sphere (or none) with your roots: see " << path);
     REQUIRE(wrong == 0);
 }

@@ -4,13 +4,13 @@
 namespace tutorial {
 
 // [solution]
-rc::Answer nearestHit(const rc::Scene& scene, const rc::Query& q) {
-    rc::Answer best;  // object -1, t = kNoHit
+Answer nearestHit(const rc::Scene& scene, const Query& q) {
+    Answer best;  // object -1, t = kNoHit
     for (int id = 0; id < scene.size(); ++id) {
         // Convexity: a ray leaving a surface cannot meet it again
         if (id == q.origin.object && !q.origin.inside) continue;
         const double t = scene.intersect(q.ray, id, q.origin);
-        if (t < q.tmax && rc::nearer(t, id, best)) best = {id, t};
+        if (t < q.tmax && (t < best.t || (t == best.t && id < best.object))) best = {id, t};
     }
     return best;
 }
