@@ -269,7 +269,7 @@ TEST_CASE("A click outside the image lets the selection go", "[gui][tour]") {
     REQUIRE(w.selection().pixel == -1);
 }
 
-TEST_CASE("--frame-log writes one line per UI-thread task, first-frame among them", "[gui][tour][cli]") {
+TEST_CASE("The frame log (--frame-log) writes one line per UI-thread task, first-frame among them", "[gui][tour][cli]") {
     QTemporaryDir dir;
     const QString log = dir.filePath("frames.txt");
     QProcess gui;
