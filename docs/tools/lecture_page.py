@@ -18,7 +18,8 @@ def escape(text: str) -> str:
 
 def figure(tour_path: str, k: int, stop: dict, pictures: bool) -> str:
     command = f"raycache-gui --tour {tour_path} --stop {k} --window 1280x720 --large-fonts"
-    text = f"**Stop {k}: {escape(stop['title'])}.** {escape(stop['caption'])}\n\n"
+    # Explicit paragraphs (\\par): an included document's blank lines do not part them
+    text = f"\\par\n<b>Stop {k}: {escape(stop['title'])}.</b> {escape(stop['caption'])}\n\n"
     if pictures:
         text += f"\\image html tour_stop_{k:02d}.png \"Stop {k} of the lecture, at 1280x720 with large fonts\"\n\n"
     text += f"\\verbatim\n{command}\n\\endverbatim\n\n"
@@ -31,7 +32,7 @@ def main() -> int:
         tour = json.load(f)
     tour_path = "tours/" + tour_file.replace("\\", "/").split("/")[-1]
     stops = tour["stops"]
-    lines = [f"The tour `{tour_path}`, *{escape(tour.get('title', ''))}*: {len(stops)} stops. "
+    lines = [f"\\par\nThe tour `{tour_path}`, *{escape(tour.get('title', ''))}*: {len(stops)} stops. "
              f"{escape(tour.get('description', ''))}\n"]
     if not pictures:
         lines.append("This docs build was configured without the GUI, so the stops have no pictures: "
@@ -44,8 +45,8 @@ def main() -> int:
         mine = [(k, s) for k, s in enumerate(stops, 1) if s.get("page") == page]
         text = ""
         if mine:
-            text = ("On a projector: the stop" + ("s" if len(mine) > 1 else "") +
-                    f" of the \\ref lecture that show this page, made by the docs build.\n\n")
+            text = ("\\par\nOn a projector: the stop" + ("s" if len(mine) > 1 else "") + " of the \\ref lecture that show" +
+                    ("" if len(mine) > 1 else "s") + " this page, made by the docs build.\n\n")
             text += "".join(figure(tour_path, k, s, pictures) for k, s in mine)
         with open(f"{out}/tour_{page}.md", "w", encoding="utf-8") as f:
             f.write(text + "\n")
