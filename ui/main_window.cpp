@@ -610,6 +610,7 @@ void MainWindow::buildDocks() {
     resizeDocks({log}, {180}, Qt::Vertical);
     connect(rayTree_, &RayTreePanel::rayChosen, this, &MainWindow::selectEvent);
     connect(eventLog_, &EventLogPanel::eventChosen, this, &MainWindow::selectEvent);
+    connect(stats_, &StatsPanel::chartDue, this, &MainWindow::refresh);
     connect(eventLog_, &EventLogPanel::reasonChosen, this, [this](rc::MissReason r) { missFilter_ = r; });
     connect(objects_, &ObjectsPanel::objectChosen, this, &MainWindow::selectObject);
 }
@@ -1204,6 +1205,11 @@ bool MainWindow::goToStop(int stop, bool wait) {
 }
 
 QString MainWindow::tourCaption() const { return tourCaption_->isVisible() || stop_ > 0 ? tourCaption_->text() : QString(); }
+
+void MainWindow::setWorkerSessions(bool on) {
+    workerSessions_ = on;
+    stats_->setThrottled(on);
+}
 
 void MainWindow::setMissFilter(rc::MissReason r) {
     missFilter_ = r;

@@ -61,7 +61,7 @@ public:
     /// Builds each new render on the worker, so that the window never waits for a large
     /// scene's render to be made (the interactive window; tests and screenshots build
     /// them here, and have their state at once).
-    void setWorkerSessions(bool on) { workerSessions_ = on; }
+    void setWorkerSessions(bool on);
 
     /// Loads a built-in scene spec or an NFF file and starts a new render of it. On an
     /// error, reports it (file:line:column: message) and keeps the current scene.

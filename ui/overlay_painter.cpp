@@ -448,12 +448,14 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
 
     if (!o.legend || !keysShown_) keys.clear();
-    // A key that would cover much of the image gets a smaller font (untick Legend to hide it)
+    // A caption and key taller than the view (beside the image), or than half of it (over
+    // the image), get a smaller font rather than be cut off (untick Legend to hide the key)
     const double rows = double(keys.size() + caption.size()) + 4;
     const double room = std::max(image.left() - area.left(), area.right() - image.right());
-    if (room < 250 && rows * (QFontMetricsF(p.font()).height() + 2) > 0.55 * area.height()) {
+    const double tall = room < 250 ? 0.55 : 0.95;
+    if (rows * (QFontMetricsF(p.font()).height() + 2) > tall * area.height()) {
         QFont small = p.font();
-        const double f = std::max(0.6, 0.55 * area.height() / (rows * (QFontMetricsF(small).height() + 2)));
+        const double f = std::max(0.6, tall * area.height() / (rows * (QFontMetricsF(small).height() + 2)));
         small.setPointSizeF(small.pointSizeF() * f);
         p.setFont(small);
     }

@@ -4,6 +4,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QTimer>
 #include <QLabel>
 #include <QLineSeries>
 #include <QScrollArea>
@@ -135,7 +136,17 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
     text_->setText(t);
     // The chart at most twice a second (and whenever the render is done): relaying it out
     // is the costliest thing a refresh does
-    if (!s.done() && chartClock_.isValid() && chartClock_.elapsed() < 500) return;
+    if (throttled_ && !s.done() && chartClock_.isValid() && chartClock_.elapsed() < 500) {
+        // Asks for a refresh when the half second is up, so the chart ends on the last state
+        if (!chartDue_) {
+            chartDue_ = true;
+            QTimer::singleShot(std::max<qint64>(1, 500 - chartClock_.elapsed()), this, [this] {
+                chartDue_ = false;
+                emit chartDue();
+            });
+        }
+        return;
+    }
     chartClock_.start();
 
     // A chart a few hundred pixels wide shows no more points than that: every k-th sample

@@ -19,7 +19,14 @@ namespace rcgui {
 /// misses (left axis) and intersection tests (right axis) against steps.
 class StatsPanel : public QWidget {
     Q_OBJECT
+signals:
+    /// A refresh came too soon after the last for the chart: refresh again.
+    void chartDue();
+
 public:
+    /// Redraws the chart at most twice a second while a render runs (a live window; a
+    /// screenshot draws every refresh).
+    void setThrottled(bool on) { throttled_ = on; }
     explicit StatsPanel(QWidget* parent = nullptr);
     /// Axis labels, titles, legend and line widths for a projector (or back).
     void setLargeFonts(bool on);
@@ -34,6 +41,8 @@ public:
 
 private:
     QElapsedTimer chartClock_;  ///< since the chart was last updated
+    bool chartDue_ = false;     ///< a chartDue() is on its way
+    bool throttled_ = false;
     QLabel* text_;
     QChart* chart_;
     QLineSeries *hits_, *misses_, *tests_, *otherTests_;
