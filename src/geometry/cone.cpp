@@ -1,5 +1,6 @@
 #include "geometry/cone.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>

@@ -1,7 +1,7 @@
 #include "scene/sphereflake.h"
+#include "scene/decimal.h"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -70,9 +70,9 @@ void normalize(Point4& v) {
 /// `v` as SPD prints it (`%g`: six significant digits) and the NFF reader reads it back.
 double printed(double v) {
     char text[32];
-    const auto written = std::to_chars(text, text + sizeof text, v, std::chars_format::general, 6);
+    const std::size_t written = formatDecimal(v, 6, text, sizeof text);
     double back = v;
-    std::from_chars(text, written.ptr, back);
+    parseDecimal(std::string_view(text, written), back);
     return back;
 }
 
