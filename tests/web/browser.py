@@ -50,8 +50,13 @@ class Browser:
                     raise RuntimeError(f"{method}: {answer['error']}")
                 return answer.get("result", {})
 
-    def open(self, url):
+    def open(self, url, timeout=30.0):
+        """Navigates and waits until the new document is the one evaluated."""
+        self.evaluate("window.__replaced = true")  # gone once the new document is in
         self.call("Page.navigate", session=True, url=url)
+        if not self.wait_for(f"!window.__replaced && location.href === {json.dumps(url)} && "
+                             "document.readyState === 'complete'", timeout):
+            raise RuntimeError(f"{url} did not load")
 
     def evaluate(self, expression):
         r = self.call("Runtime.evaluate", session=True, expression=expression, returnByValue=True)
