@@ -10,6 +10,7 @@ natively (`raycache render`'s), same cache and order, median of --repeat runs ea
 Usage: web_hashes.py --cli build/src/raycache --page build-web/web/index.html
            --scenes-dir scenes [--width 20 --height 16] [--bench]"""
 import argparse
+import json
 import pathlib
 import re
 import statistics
@@ -53,6 +54,35 @@ def run_with_controls(browser, cache, order):
         document.getElementById('end').click(); }})()""")
 
 
+def drop_file(browser, name, text):
+    """Drops a file named `name` holding `text` on the page's picture, as a user would."""
+    browser.evaluate(f"""(() => {{
+        const files = new DataTransfer();
+        files.items.add(new File([{json.dumps(text)}], {json.dumps(name)}));
+        document.getElementById('canvas').dispatchEvent(
+            new DragEvent('drop', {{ dataTransfer: files, bubbles: true, cancelable: true }})); }})()""")
+
+
+def check_dropped(browser, a):
+    """A dropped NFF file renders with the native hash; a bad one shows file:line:column."""
+    wrong = []
+    scene = pathlib.Path(a.scenes_dir) / "balls1.nff"
+    browser.open(page_url(a.page, "cube:3", a.width, a.height, "blocker", "bfs"))
+    web_hash(browser, a.timeout)
+    drop_file(browser, "balls1.nff", scene.read_text())
+    browser.wait_for("document.getElementById('image-hash').textContent === ''", a.timeout)
+    browser.evaluate("document.getElementById('end').click()")
+    expected = native(a.cli, str(scene), a.width, a.height, "blocker", "bfs", ["--hash", "-q"]).strip()
+    got = web_hash(browser, a.timeout)
+    if got != expected:
+        wrong.append(f"dropped balls1.nff: web {got}, native {expected}")
+    drop_file(browser, "bad.nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 8 8\ns 0 0 0 -1\n")
+    error = browser.wait_for(CAPTION_ERROR, a.timeout) or ""
+    if not error.startswith("/bad.nff:8:9: "):
+        wrong.append(f"dropped bad.nff: caption {error!r}, not /bad.nff:8:9: ...")
+    return wrong
+
+
 def check_hashes(a):
     scenes = BUILTINS + ["scenes/" + p.name for p in sorted(pathlib.Path(a.scenes_dir).glob("*.nff"))]
     browser = Browser(a.chromium)
@@ -74,13 +104,15 @@ def check_hashes(a):
                         matched += 1
                     else:
                         wrong.append(f"{scene} {cache} {order}: web {got}, native {expected}")
+        dropped = check_dropped(browser, a)
     finally:
         browser.close()
-    for w in wrong:
+    for w in wrong + dropped:
         print("DIFFERENT", w)
     print(f"{matched} of {matched + len(wrong)} web hashes equal the native ones "
           f"({len(scenes)} scenes x {len(CACHES)} caches x {len(ORDERS)} orders at {a.width}x{a.height})")
-    return 0 if not wrong and matched == len(scenes) * len(CACHES) * len(ORDERS) else 1
+    print("dropped files: " + ("as native" if not dropped else f"{len(dropped)} wrong"))
+    return 0 if not wrong and not dropped and matched == len(scenes) * len(CACHES) * len(ORDERS) else 1
 
 
 def web_seconds(browser):
