@@ -32,19 +32,30 @@ std::string builtinSceneList() {
     return out;
 }
 
-// The last ray traced, and the intersection tests made for each pixel (the heatmap)
+// The last ray traced; for each pixel the intersection tests made (the heatmap) and the
+// reason of its last committed cache miss (the miss markers; 0: none)
 class StepRecorder : public TraceSink {
 public:
-    explicit StepRecorder(int pixels) : tests(std::size_t(pixels), 0) {}
+    explicit StepRecorder(int pixels) : tests(std::size_t(pixels), 0), missReason(std::size_t(pixels), 0) {}
     void onEvent(const TraceEvent& e) override {
         last = e;
         any = true;
         tests[std::size_t(e.task.pixel)] += std::uint32_t(e.tests);
+        if (!e.deferred && e.lookup.decision == Decision::Miss)
+            missReason[std::size_t(e.task.pixel)] = std::uint8_t(e.lookup.reason);
     }
     TraceEvent last;
     bool any = false;
     std::vector<std::uint32_t> tests;
+    std::vector<std::uint8_t> missReason;
 };
+
+// The names of the miss reasons, by their number in missReasons(), one a line
+std::string missReasonNames() {
+    std::string out;
+    for (int r = 0; r < kMissReasons; ++r) out += std::string(toString(MissReason(r))) + "\n";
+    return out;
+}
 
 class WebRender {
 public:
@@ -99,6 +110,12 @@ public:
     /// Intersection tests made for each pixel so far.
     emscripten::val heat() const {
         return emscripten::val(emscripten::typed_memory_view(recorder_->tests.size(), recorder_->tests.data()));
+    }
+
+    /// The reason of each pixel's last committed cache miss (0: none; see missReasonNames).
+    emscripten::val missReasons() const {
+        return emscripten::val(
+            emscripten::typed_memory_view(recorder_->missReason.size(), recorder_->missReason.data()));
     }
 
     /// The counters, as JSON.
@@ -158,6 +175,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
     function("storeSceneFile", &storeSceneFile);
     function("builtinSceneList", &builtinSceneList);
     function("checkScene", &checkScene);
+    function("missReasonNames", &missReasonNames);
     class_<WebRender>("Render")
         .constructor<std::string, int, int, std::string, std::string, std::string>()
         .function("width", &WebRender::width)
@@ -169,6 +187,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("runUntil", &WebRender::runUntil)
         .function("image", &WebRender::image)
         .function("heat", &WebRender::heat)
+        .function("missReasons", &WebRender::missReasons)
         .function("statistics", &WebRender::statistics)
         .function("caption", &WebRender::caption)
         .function("focusPixel", &WebRender::focusPixel);

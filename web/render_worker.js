@@ -12,11 +12,12 @@ function renderWorkerMain(self, RayCache) {
   function frame(extra) {
     const image = render.image().slice();
     const heat = render.heat().slice();
+    const misses = render.missReasons().slice();
     self.postMessage(Object.assign({
-      type: 'frame', width: render.width(), height: render.height(), image, heat,
+      type: 'frame', width: render.width(), height: render.height(), image, heat, misses,
       statistics: JSON.parse(render.statistics()), caption: render.caption(),
       focusPixel: render.focusPixel(), done: render.done(), progress: render.progress(), running,
-    }, extra || {}), [image.buffer, heat.buffer]);
+    }, extra || {}), [image.buffer, heat.buffer, misses.buffer]);
   }
 
   function tick() {
@@ -74,6 +75,7 @@ function renderWorkerMain(self, RayCache) {
 
   RayCache().then((m) => {
     module = m;
-    self.postMessage({ type: 'loaded', scenes: module.builtinSceneList() });
+    self.postMessage({ type: 'loaded', scenes: module.builtinSceneList(),
+                      missReasons: module.missReasonNames().trim().split('\n') });
   });
 }

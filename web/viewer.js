@@ -44,6 +44,7 @@
   function onMessage(m) {
     if (m.type === 'loaded') {
       fillScenes(m.scenes);
+      fillMissLegend(m.missReasons);
       open();
       if (params.get('run') === 'end') pendingRun = 'end';
     } else if (m.type === 'error') {
@@ -110,6 +111,16 @@
         out.data[4 * i + 3] = 255;
       }
     }
+    if ($('misses').checked) {
+      // Each pixel's last cache miss, coloured by its reason
+      for (let i = 0; i < n; ++i) {
+        const c = kMissColours[m.misses[i]];
+        if (!m.misses[i] || !c) continue;
+        out.data[4 * i] = c[0];
+        out.data[4 * i + 1] = c[1];
+        out.data[4 * i + 2] = c[2];
+      }
+    }
     context.putImageData(out, 0, 0);
     // The pixel of the ray in focus, while the render is not done
     if (m.focusPixel >= 0 && !m.done) {
@@ -140,6 +151,16 @@
     if (opened === generation) $('image-hash').textContent = [...digest].map((b) => b.toString(16).padStart(2, '0')).join('');
   }
 
+  // The Qt GUI's colours of the miss reasons (ui/palette.cpp), by MissReason's number
+  const kMissColours = [null, [153, 153, 153], [240, 228, 66], [0, 114, 178], [213, 94, 0], [230, 159, 0],
+                        [86, 180, 233], [204, 121, 167]];
+  function fillMissLegend(names) {
+    $('miss-legend').innerHTML = names.slice(1).map((name, i) => {
+      const c = kMissColours[i + 1] || [255, 255, 255];
+      return '<span><i style="background: rgb(' + c.join(',') + ')"></i>' + name.replace(/_/g, ' ') + '</span>';
+    }).join(' ');
+  }
+
   // Controls; the URL's ?scene=S&width=W&height=H&cache=C&order=O&accel=A&run=end sets them
   for (const key of ['width', 'height', 'cache', 'order', 'accel'])
     if (params.has(key)) $(key).value = params.get(key);
@@ -151,6 +172,7 @@
   $('play').onclick = () => worker.postMessage({ type: last && last.running === 'play' ? 'pause' : 'play' });
   $('end').onclick = () => worker.postMessage({ type: 'end' });
   $('heatmap').onchange = draw;
+  $('misses').onchange = draw;
 
   // An NFF file dropped on the picture
   canvas.ondragover = (e) => { e.preventDefault(); canvas.classList.add('dragging'); };
