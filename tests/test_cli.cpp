@@ -135,7 +135,7 @@ TEST_CASE("bench measures every search, cache and order side by side", "[cli][be
     REQUIRE(perRay["linear/blocker/bfs"] < perRay["linear/none/scanline"]);
 }
 
-TEST_CASE("--hash prints the SHA-256 of the pixel bytes, rows top to bottom, as sha256sum does", "[cli]") {
+TEST_CASE("render --hash prints the SHA-256 of the pixel bytes, rows top to bottom, as sha256sum does", "[cli]") {
     const fs::path ppm = scratch("h.ppm"), raw = scratch("h.rgb");
     const Result r = run("render cube:3 --width 32 --height 24 --cache blocker --order bfs -q --hash -o " + ppm.string());
     INFO(r.output);

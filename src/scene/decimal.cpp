@@ -1,6 +1,7 @@
 #include "scene/decimal.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -27,7 +28,8 @@ DecimalStatus parseDecimal(std::string_view token, double& value) {
     errno = 0;
     const double v = strtod_l(text.c_str(), &end, cLocale());
     if (end != text.c_str() + text.size()) return DecimalStatus::NotANumber;
-    if (errno == ERANGE) return DecimalStatus::OutOfRange;
+    // Beyond double's range, or so small it rounds to 0; a subnormal number is a number
+    if (errno == ERANGE && (std::isinf(v) || v == 0.0)) return DecimalStatus::OutOfRange;
     value = v;
     return DecimalStatus::Ok;
 }

@@ -13,7 +13,8 @@ enum class DecimalStatus { Ok, NotANumber, OutOfRange };
 
 /// Reads a whole token as a decimal floating-point number, correctly rounded: digits, a
 /// point, an exponent, or inf/nan. A leading '-', no leading '+' or space, no hexadecimal.
-/// "1.0abc" is not a number; an exponent beyond double's range is OutOfRange.
+/// "1.0abc" is not a number; a number beyond double's range, or one that rounds to 0
+/// (1e-400, not 0.0), is OutOfRange; a subnormal one (4.9e-324) is read.
 DecimalStatus parseDecimal(std::string_view token, double& value);
 
 /// `v` as printf's `%.{digits}g` writes it in the "C" locale, into `out` (of `size` bytes).
