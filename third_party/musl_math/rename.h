@@ -3,8 +3,6 @@
 #define cos rc_musl_cos
 #define tan rc_musl_tan
 #define asin rc_musl_asin
-#define acos rc_musl_acos
-#define log rc_musl_log
 #define pow rc_musl_pow
 #define __sin rc_musl___sin
 #define __cos rc_musl___cos
@@ -18,5 +16,4 @@
 #define __math_xflow rc_musl___math_xflow
 #define __exp_data rc_musl___exp_data
 #define __pow_log_data rc_musl___pow_log_data
-#define __log_data rc_musl___log_data
 #define hidden

@@ -11,8 +11,6 @@ double rc_musl_sin(double);
 double rc_musl_cos(double);
 double rc_musl_tan(double);
 double rc_musl_asin(double);
-double rc_musl_acos(double);
-double rc_musl_log(double);
 double rc_musl_pow(double, double);
 #ifdef __cplusplus
 }
