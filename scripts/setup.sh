@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Install what RayCache needs from Debian bookworm, idempotently: a no-op when all is there.
-# Usage: scripts/setup.sh [--with-browser] [--with-valgrind] [--with-profilers]   (as root, or with sudo)
-# --with-browser: chromium, to look at the docs headless; --with-valgrind: for tests/ui/valgrind_gui.sh;
+# Usage: scripts/setup.sh [--with-web] [--with-browser] [--with-valgrind] [--with-profilers]   (as root, or with sudo)
+# --with-web: Emscripten, to build the web edition (preset web); --with-browser: chromium, to test the
+# web edition and look at the docs headless; --with-valgrind: for tests/ui/valgrind_gui.sh;
 # --with-profilers: perf and valgrind, to measure where a render's time goes (see docs/pages/table1.md)
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ pkg-config
-  libglm-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
+  cmake ninja-build g++ pkg-config dpkg-dev
+  libglm-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev libssl-dev
   qt6-base-dev qt6-charts-dev libqt6opengl6-dev libgl-dev
   doxygen graphviz doxygen-awesome-css libjs-mathjax
   clang libclang-rt-14-dev libembree-dev
@@ -15,6 +16,7 @@ packages=(
 )
 for option in "$@"; do
   case "$option" in
+    --with-web) packages+=(emscripten) ;;
     --with-browser) packages+=(chromium) ;;
     --with-valgrind) packages+=(valgrind) ;;
     --with-profilers) packages+=(linux-perf valgrind) ;;

@@ -4,9 +4,12 @@
 # suites again under AddressSanitizer and UBSan (preset asan), the threaded render tests
 # under ThreadSanitizer (preset tsan), and a bounded fuzz run (RAYCACHE_FUZZ_SECONDS,
 # default 60; scripts/fuzz.sh runs longer). Prints how long each stage took.
+# With Emscripten and Chromium (installed here), the default build also builds the web edition
+# and ctest compares its images in headless Chromium with native ones; then the web edition's
+# speed against native is printed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --with-web --with-browser
 jobs=$(nproc)
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$jobs"
@@ -14,6 +17,12 @@ if cmake --build --preset default --target help | grep -q '^docs:'; then
   cmake --build --preset default --target docs
 fi
 ctest --preset default -j "$jobs"
+if [[ -f build/web-edition/web/index.html ]]; then
+  python3 tests/web/web_hashes.py --bench --cli build/src/raycache --page build/web-edition/web/index.html \
+    --scenes-dir scenes || echo "web edition: speed not measured"
+else
+  echo "web edition: not built (emcmake or chromium missing: scripts/setup.sh --with-web --with-browser)"
+fi
 
 stage() { echo "== $1: $((SECONDS - start)) s"; start=$SECONDS; }
 start=0

@@ -134,3 +134,36 @@ TEST_CASE("bench measures every search, cache and order side by side", "[cli][be
     REQUIRE(r.output.find("ns per object test") != std::string::npos);
     REQUIRE(perRay["linear/blocker/bfs"] < perRay["linear/none/scanline"]);
 }
+
+TEST_CASE("render --hash prints the SHA-256 of the pixel bytes, rows top to bottom, as sha256sum does", "[cli]") {
+    const fs::path ppm = scratch("h.ppm"), raw = scratch("h.rgb");
+    const Result r = run("render cube:3 --width 32 --height 24 --cache blocker --order bfs -q --hash -o " + ppm.string());
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    REQUIRE(r.output.size() == 65);  // 64 hex digits and a newline, nothing else under -q
+    // The PPM's pixel bytes, without its header, hashed by coreutils
+    std::ifstream in(ppm, std::ios::binary);
+    std::string magic;
+    int w = 0, h = 0, maxval = 0;
+    in >> magic >> w >> h >> maxval;
+    in.get();
+    REQUIRE(magic == "P6");
+    REQUIRE(w == 32);
+    REQUIRE(h == 24);
+    std::vector<char> pixels(std::size_t(w) * h * 3);
+    in.read(pixels.data(), std::streamsize(pixels.size()));
+    REQUIRE(in.gcount() == std::streamsize(pixels.size()));
+    REQUIRE(in.peek() == EOF);
+    std::ofstream(raw, std::ios::binary).write(pixels.data(), std::streamsize(pixels.size()));
+    const std::string cmd = "sha256sum " + raw.string() + " > " + raw.string() + ".sum";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    std::ifstream sum(raw.string() + ".sum");
+    std::string digest;
+    sum >> digest;
+    REQUIRE(r.output.substr(0, 64) == digest);
+
+    // Every cache and order gives the same image, so the same hash; another scene another
+    for (const char* other : {"--cache none --order scanline", "--cache blocker+dir --order progressive"})
+        REQUIRE(run(std::string("render cube:3 --width 32 --height 24 -q --hash ") + other).output == r.output);
+    REQUIRE(run("render cube:4 --width 32 --height 24 -q --hash").output != r.output);
+}

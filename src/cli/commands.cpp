@@ -1,4 +1,5 @@
 #include "cli/commands.h"
+#include "cli/image_hash.h"
 
 #include <cerrno>
 #include <chrono>
@@ -140,7 +141,7 @@ RenderOptions RenderFlags::options() const {
 namespace {
 struct RenderArgs {
     std::string scene, out, stats;
-    bool quiet = false;
+    bool quiet = false, hash = false;
     int threads = 1;
     RenderFlags flags;
 };
@@ -182,7 +183,11 @@ int renderCommand(const RenderArgs& a) {
         return 128 + gStopSignal;
     }
 
-    if (!a.out.empty()) writePng(a.out, options.width, options.height, run.image.rgb8());
+    if (!a.out.empty() || a.hash) {
+        const std::vector<std::uint8_t> rgb = run.image.rgb8();
+        if (!a.out.empty()) writeImage(a.out, options.width, options.height, rgb);
+        if (a.hash) std::printf("%s\n", sha256Hex(rgb).c_str());
+    }
     const Counters& n = run.counters;
     if (!a.stats.empty()) {
         const BeamTreeStats b = beams.build();
@@ -210,7 +215,11 @@ void addRenderCommand(CLI::App& app, Commands& out) {
     CLI::App* c = app.add_subcommand("render", "render a scene to PNG and report what it took");
     c->add_option("scene", a->scene, "an .nff file or a built-in such as cube:5 (see `raycache scenes`)")
         ->required();
-    c->add_option("-o,--output", a->out, "PNG file to write")->check(outputFile());
+    c->add_option("-o,--output", a->out, "image file to write: PNG, or binary PPM when it ends in .ppm")
+        ->check(outputFile());
+    c->add_flag("--hash", a->hash,
+                "print the SHA-256 of the image's 8-bit RGB pixel bytes, rows top to bottom (one line, "
+                "before the summary; -q leaves only it)");
     c->add_option("--stats", a->stats, "statistics JSON file to write")->check(outputFile());
     c->add_flag("--verify", a->flags.verify, "run the complete search beside every cached answer");
     c->add_flag("-q,--quiet", a->quiet, "no progress line or summary");

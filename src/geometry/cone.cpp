@@ -1,5 +1,7 @@
 #include "geometry/cone.h"
+#include "geometry/portable_math.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -47,7 +49,7 @@ bool meetsHull(const Sphere& s, const Sphere& a, const Sphere& b, double slack) 
 double hullHalfAngle(const Sphere& a, const Sphere& b) {
     const double D = glm::length(b.c - a.c);
     if (D <= std::abs(a.r - b.r)) return 0.0;
-    return std::asin((a.r - b.r) / D);
+    return pm::asin((a.r - b.r) / D);
 }
 
 }  // namespace rc

@@ -47,6 +47,19 @@ void writePng(const std::string& path, int width, int height, const std::vector<
     writeTextFile(path, png);
 }
 
+void writePpm(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+    std::string ppm = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+    ppm.append(rgb.begin(), rgb.end());
+    writeTextFile(path, ppm);
+}
+
+void writeImage(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+    if (path.ends_with(".ppm"))
+        writePpm(path, width, height, rgb);
+    else
+        writePng(path, width, height, rgb);
+}
+
 void writeTextFile(const std::string& path, const std::string& text) {
     atomically(path, [&](const std::string& to) {
         std::ofstream out(to, std::ios::binary);

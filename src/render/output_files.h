@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// \brief Writing results: PNG images and text files, atomically (temporary file, rename).
+/// \brief Writing results: PNG and PPM images and text files, atomically (temporary file, rename).
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -19,6 +19,13 @@ struct OutputError : std::runtime_error {
 ///
 /// Writes an 8-bit RGB image as PNG.
 void writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);
+
+/// Writes an 8-bit RGB image as binary PPM (P6): a short header, then the pixel bytes
+/// as they are, rows top to bottom.
+void writePpm(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);
+
+/// writePpm() when `path` ends in .ppm, else writePng().
+void writeImage(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);
 
 /// Writes text (or any bytes) to a file; an interrupted write never leaves a truncated
 /// file behind.

@@ -1,4 +1,5 @@
 #include "scene/builtin_scenes.h"
+#include "geometry/portable_math.h"
 
 #include <array>
 #include <charconv>
@@ -55,7 +56,7 @@ Scene makeCube(int n, std::uint64_t seed) {
     cam.width = cam.height = 512;
     cam.up = Vec3(0.0, 1.0, 0.0);
     cam.at = s.bound.c;
-    const double dist = s.bound.r / std::sin(0.5 * cam.angle * std::numbers::pi / 180.0);
+    const double dist = s.bound.r / pm::sin(0.5 * cam.angle * std::numbers::pi / 180.0);
     cam.from = cam.at + dist * glm::normalize(Vec3(1.0, 0.8, 1.3));
 
     // Two lights above the camera, one to each side, so that spheres cast shadows
@@ -101,7 +102,11 @@ Scene makeGlass(std::uint64_t seed) {
     int placed = 0;
     for (int attempt = 0; attempt < 400 && placed < 10; ++attempt) {
         const double r = rnd.uniform(0.15, 0.3);
-        const Sphere m = stand(rnd.uniform(-4.0, 4.0), rnd.uniform(-5.0, 3.0), r);
+        // One draw a statement: the order of a call's arguments is the compiler's (GCC's
+        // right to left, clang's left to right)
+        const double z = rnd.uniform(-5.0, 3.0);
+        const double x = rnd.uniform(-4.0, 4.0);
+        const Sphere m = stand(x, z, r);
         const int colour = colours[rnd.index(5)];
         bool free = true;
         for (const Sphere& o : s.spheres) free = free && glm::length(o.c - m.c) > o.r + m.r + 0.02;

@@ -1,4 +1,5 @@
 #include "scene/camera.h"
+#include "geometry/portable_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@ RayGenerator::RayGenerator(const Camera& cam, int width, int height)
     forward_ = glm::normalize(cam.at - cam.from);
     right_ = glm::normalize(glm::cross(forward_, cam.up));
     up_ = glm::cross(right_, forward_);
-    const double half = std::tan(cam.angle * std::numbers::pi / 360.0);
+    const double half = pm::tan(cam.angle * std::numbers::pi / 360.0);
     const double m = double(std::max(width, height));
     sx_ = half * width / m;
     sy_ = half * height / m;

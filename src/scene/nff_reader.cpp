@@ -1,8 +1,8 @@
 #include "scene/nff_reader.h"
+#include "scene/decimal.h"
 
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -133,15 +133,12 @@ enum class NumberStatus { Ok, NotANumber, NotFinite, OutOfRange };
 
 /// Parses a whole token as a decimal floating-point number ("1.0abc" is not one).
 NumberStatus toNumber(std::string_view s, double& value) {
-    // from_chars takes no leading '+'; NFF writers sometimes emit one
+    // Numbers take no leading '+'; NFF writers sometimes emit one
     if (s.size() > 1 && s[0] == '+' && s[1] != '+' && s[1] != '-') s.remove_prefix(1);
     if (s.empty()) return NumberStatus::NotANumber;
-    const char* first = s.data();
-    const char* last = s.data() + s.size();
-    const auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
-    if (ptr != last) return NumberStatus::NotANumber;
-    if (ec == std::errc::result_out_of_range) return NumberStatus::OutOfRange;
-    if (ec != std::errc()) return NumberStatus::NotANumber;
+    const DecimalStatus status = parseDecimal(s, value);
+    if (status == DecimalStatus::OutOfRange) return NumberStatus::OutOfRange;
+    if (status != DecimalStatus::Ok) return NumberStatus::NotANumber;
     if (!std::isfinite(value)) return NumberStatus::NotFinite;
     if (std::abs(value) > NffLimits::maxMagnitude) return NumberStatus::OutOfRange;
     return NumberStatus::Ok;

@@ -1,7 +1,7 @@
 #include "scene/sphereflake.h"
+#include "scene/decimal.h"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -14,7 +14,10 @@ namespace {
 // The matrices and points of SPD's library: 4 x 4 matrices that multiply row vectors
 // (x, y, z, w) from the right. SPD's PI, 3.141592653589793, is std::numbers::pi's double. Every expression below keeps SPD's
 // order of operations, so that the doubles come out the same as SPD's, bit for bit
-// (this file is compiled without floating-point contraction, see src/CMakeLists.txt).
+// (this file is compiled without floating-point contraction, see src/CMakeLists.txt). Its
+// sin, cos, log, asin and acos are the C library's, not geometry/portable_math.h's: SPD's
+// published numbers were printed with glibc's.
+
 using Point4 = std::array<double, 4>;
 using Matrix4 = std::array<std::array<double, 4>, 4>;
 
@@ -70,9 +73,9 @@ void normalize(Point4& v) {
 /// `v` as SPD prints it (`%g`: six significant digits) and the NFF reader reads it back.
 double printed(double v) {
     char text[32];
-    const auto written = std::to_chars(text, text + sizeof text, v, std::chars_format::general, 6);
+    const std::size_t written = formatDecimal(v, 6, text, sizeof text);
     double back = v;
-    std::from_chars(text, written.ptr, back);
+    parseDecimal(std::string_view(text, written), back);
     return back;
 }
 

@@ -1,4 +1,5 @@
 #include "search/blocker_cache.h"
+#include "geometry/portable_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -261,9 +262,9 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
             const Sphere& s = scene.objects[id].bound;
             const Vec3 v = s.c - from.c;
             const double sinB = (s.r + reach) / glm::length(v);
-            angle = sinB < 1.0 ? std::min(angle, angleBetween(axis, v) - std::asin(sinB)) : -1.0;
+            angle = sinB < 1.0 ? std::min(angle, angleBetween(axis, v) - pm::asin(sinB)) : -1.0;
             // Nothing farther can narrow the cone; with no cone at all, nothing can matter
-            limit = angle < 0.0 ? -kNoHit : 1.0 - std::cos(angle) + 1e-12;
+            limit = angle < 0.0 ? -kNoHit : 1.0 - pm::cos(angle) + 1e-12;
         }
         const Scene& scene;
         Sphere from;
@@ -277,8 +278,8 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     search_.cull(cone);
     e.coneAngle = std::min(cone.angle, std::numbers::pi) - 1e-9;
     // [empty-cone]
-    e.coneCos = std::cos(e.coneAngle);
-    e.coneSin = std::sin(e.coneAngle) * (1.0 - 1e-12);
+    e.coneCos = pm::cos(e.coneAngle);
+    e.coneSin = pm::sin(e.coneAngle) * (1.0 - 1e-12);
     ++n.cylindersBuilt;
 }
 

@@ -1,4 +1,5 @@
 #include "trace/distributed_sampling.h"
+#include "geometry/portable_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,19 +75,19 @@ Vec3 lightSample(const Light& light, const Vec3& p, std::uint64_t key) {
     frame(w, u, v);
     const double r = light.radius * std::sqrt(hashedUnit(key, 0));
     const double phi = 2.0 * std::numbers::pi * hashedUnit(key, 1);
-    return light.position + r * (std::cos(phi) * u + std::sin(phi) * v);
+    return light.position + r * (pm::cos(phi) * u + pm::sin(phi) * v);
     // [light-sample]
 }
 
 Vec3 coneSample(const Vec3& axis, double halfAngle, std::uint64_t key) {
     // [cone-sample]
     // cos(theta) uniform in [cos(alpha), 1]: uniform in solid angle over the cone
-    const double cosT = 1.0 - hashedUnit(key, 0) * (1.0 - std::cos(halfAngle));
+    const double cosT = 1.0 - hashedUnit(key, 0) * (1.0 - pm::cos(halfAngle));
     const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
     const double phi = 2.0 * std::numbers::pi * hashedUnit(key, 1);
     Vec3 u, v;
     frame(axis, u, v);
-    return glm::normalize(cosT * axis + sinT * (std::cos(phi) * u + std::sin(phi) * v));
+    return glm::normalize(cosT * axis + sinT * (pm::cos(phi) * u + pm::sin(phi) * v));
     // [cone-sample]
 }
 

@@ -1,4 +1,5 @@
 #include "trace/shading.h"
+#include "geometry/portable_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -100,7 +101,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
             if (cosine <= 0.0) continue;  // the light is behind the surface
             const Vec3 r = glm::reflect(-l, n);
             const double spec = m.ks > 0.0 && m.shine > 0.0
-                                    ? m.ks * std::pow(std::max(0.0, glm::dot(r, -q.ray.d)), m.shine)
+                                    ? m.ks * pm::pow(std::max(0.0, glm::dot(r, -q.ray.d)), m.shine)
                                     : 0.0;
             Vec3 light_in = task.weight * light.color * lightScale * (m.kd * cosine * m.color + Vec3(spec));
             if (samples > 1) light_in /= double(samples);

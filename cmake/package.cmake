@@ -1,0 +1,29 @@
+# What `cpack -G DEB` puts in the package (and `cmake --install` installs): the command-line
+# tool, the GUI when it is built, the SPD scenes, the tours, the docs site and the web edition
+# when they are built. Build the docs target (and, for the web page, the tests with Emscripten
+# and Chromium) before packaging.
+include(GNUInstallDirs)
+if(TARGET raycache)
+  install(TARGETS raycache RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+if(TARGET raycache-gui)
+  install(TARGETS raycache-gui RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/raycache/scenes)
+if(EXISTS ${CMAKE_SOURCE_DIR}/tours)
+  install(DIRECTORY ${CMAKE_SOURCE_DIR}/tours/ DESTINATION ${CMAKE_INSTALL_DATADIR}/raycache/tours)
+endif()
+install(DIRECTORY ${CMAKE_BINARY_DIR}/docs/html/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/html OPTIONAL)
+install(DIRECTORY ${CMAKE_BINARY_DIR}/web-edition/web/ DESTINATION ${CMAKE_INSTALL_DATADIR}/raycache/web OPTIONAL
+  FILES_MATCHING PATTERN "*.html" PATTERN "*.js" PATTERN "*.css" PATTERN "CMakeFiles" EXCLUDE)
+
+set(CPACK_PACKAGE_NAME raycache)
+set(CPACK_PACKAGE_VENDOR "RayCache")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
+    "Hanrahan's caching and breadth-first search for ray tracing, to run, step and measure")
+set(CPACK_PACKAGE_CONTACT "RayCache developers <raycache@localhost>")
+set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)  # Qt, Embree, libcrypto, libstdc++: found by dpkg-shlibdeps
+set(CPACK_GENERATOR DEB)
+include(CPack)
