@@ -13,7 +13,8 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADI
 if(EXISTS ${CMAKE_SOURCE_DIR}/tours)
   install(DIRECTORY ${CMAKE_SOURCE_DIR}/tours/ DESTINATION ${CMAKE_INSTALL_DATADIR}/raycache/tours)
 endif()
-install(DIRECTORY ${CMAKE_BINARY_DIR}/docs/html/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/html OPTIONAL)
+# /usr/share/doc/raycache, the package's name (CMAKE_INSTALL_DOCDIR would take the project's, RayCache)
+install(DIRECTORY ${CMAKE_BINARY_DIR}/docs/html/ DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/raycache/html OPTIONAL)
 install(DIRECTORY ${CMAKE_BINARY_DIR}/web-edition/web/ DESTINATION ${CMAKE_INSTALL_DATADIR}/raycache/web OPTIONAL
   FILES_MATCHING PATTERN "*.html" PATTERN "*.js" PATTERN "*.css" PATTERN "CMakeFiles" EXCLUDE)
 

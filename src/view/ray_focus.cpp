@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/intersection.h"
+#include "geometry/portable_math.h"
 
 namespace rc {
 
@@ -101,7 +102,7 @@ double emptyConeAround(const rc::Scene& scene, const RayFocus& f) {
         const double dist = glm::length(v);
         if (dist <= o.bound.r) return -1.0;
         const double between = std::atan2(glm::length(glm::cross(f.ray.d, v)), glm::dot(f.ray.d, v));
-        angle = std::min(angle, between - std::asin(o.bound.r / dist));
+        angle = std::min(angle, between - pm::asin(o.bound.r / dist));
     }
     return angle < rc::kNoHit ? angle : -1.0;
 }
