@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.h"
 #include "view/miss_cause.h"
 #include "view/overlay_shapes.h"
+#include "view/path_index.h"
 #include "view/session_state.h"
 
 namespace {
@@ -71,4 +72,58 @@ TEST_CASE("A ray that left its cylinder shows the cylinder it left", "[view]") {
     REQUIRE(count(shapes, rc::ShapeRole::Cylinder) + count(shapes, rc::ShapeRole::CachedCylinder) == 1);
     // Nothing asked for, nothing made
     REQUIRE(rc::focusShapes(s, *f, proj, {false, false}).empty());
+}
+
+TEST_CASE("The path index gives every pixel's event at a path, read in parts as the log grows", "[view]") {
+    rc::SessionState s = session("trio", rc::CacheKind::Blocker, 48);
+    const int pixels = 48 * 48;
+    rc::PathIndex index;
+    // Halfway: the index agrees with the recorder's own walk of each pixel's events
+    REQUIRE(s.runUntil(rc::RunGoal::ToStep, 1000));
+    auto agrees = [&](const rc::PathIndex& ix, int node) {
+        int found = 0;
+        for (int px = 0; px < pixels; ++px) {
+            REQUIRE(ix.eventAt(px) == s.recorder().eventAt(px, node));
+            if (ix.eventAt(px) >= 0) {
+                const rc::EventRecord& e = s.recorder().events()[std::size_t(ix.eventAt(px))];
+                REQUIRE(ix.at(px).region == e.region);
+                REQUIRE(ix.at(px).decision == e.decision);
+                REQUIRE(ix.at(px).reason == e.reason);
+                ++found;
+            }
+        }
+        return found;
+    };
+    rc::PathIndex::Update u = index.update(s.recorder(), s.serial(), 0);
+    REQUIRE(u.rebuilt);
+    REQUIRE(u.complete);
+    const int half = agrees(index, 0);
+    REQUIRE(half > 0);
+    REQUIRE(half < pixels);
+    // To the end: only the new events are read, and the pixels they reach are named
+    const std::size_t readBefore = index.read();
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    u = index.update(s.recorder(), s.serial(), 0);
+    REQUIRE(!u.rebuilt);
+    REQUIRE(index.read() == s.recorder().events().size());
+    REQUIRE(int(u.pixels.size()) >= pixels - half);
+    REQUIRE(readBefore < index.read());
+    REQUIRE(agrees(index, 0) == pixels);
+    // Another path starts over; a budget reads the log in parts, each a budget long
+    rc::PathIndex parts;
+    const std::size_t budget = s.recorder().events().size() / 5 + 1;
+    int updates = 0;
+    do {
+        u = parts.update(s.recorder(), s.serial(), 1, budget);
+        REQUIRE(u.rebuilt == (updates == 0));
+        ++updates;
+        REQUIRE(parts.read() == std::min(s.recorder().events().size(), budget * std::size_t(updates)));
+    } while (!u.complete);
+    REQUIRE(updates == 5);
+    REQUIRE(agrees(parts, 1) > 0);
+    // A state taken back (a new serial) starts over
+    s.rewindTo(100);
+    u = parts.update(s.recorder(), s.serial(), 1);
+    REQUIRE(u.rebuilt);
+    agrees(parts, 1);
 }

@@ -1,5 +1,7 @@
 #include "event_log_model.h"
 
+#include <algorithm>
+
 #include <QColor>
 
 #include "labels.h"
@@ -26,19 +28,27 @@ int EventLogModel::rowsOf(const rc::SessionState* state) {
 
 void EventLogModel::setState(const rc::SessionState* state) {
     const bool same = state == state_;
-    const int rows = rowsOf(state);
-    if (same && rows >= rows_) {
-        // The log only grows: announce the new rows
-        if (rows > rows_) {
-            beginInsertRows({}, rows_, rows - 1);
-            rows_ = rows;
+    const int total = rowsOf(state);
+    const int first = std::max(0, total - kMaxRows);
+    if (same && total >= first_ + rows_ && first - first_ < rows_) {
+        // The log only grows: the oldest rows leave the window, the new ones join it
+        if (first > first_) {
+            beginRemoveRows({}, 0, first - first_ - 1);
+            rows_ -= first - first_;
+            first_ = first;
+            endRemoveRows();
+        }
+        if (total > first_ + rows_) {
+            beginInsertRows({}, rows_, total - first_ - 1);
+            rows_ = total - first_;
             endInsertRows();
         }
         return;
     }
     beginResetModel();
     state_ = state;
-    rows_ = rows;
+    first_ = first;
+    rows_ = total - first;
     endResetModel();
 }
 
@@ -60,8 +70,9 @@ void EventLogModel::setReason(rc::MissReason r) {
 
 int EventLogModel::eventAt(int row) const {
     if (!state_ || row < 0 || row >= rows_) return -1;
-    if (reason_ != rc::MissReason::None) return ofReason_[std::size_t(row)];
-    return missesOnly_ ? state_->recorder().misses()[row] : row;
+    const std::size_t i = std::size_t(first_) + std::size_t(row);
+    if (reason_ != rc::MissReason::None) return ofReason_[i];
+    return missesOnly_ ? state_->recorder().misses()[i] : int(i);
 }
 
 int EventLogModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : rows_; }

@@ -4,6 +4,8 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -25,6 +27,10 @@ EventLogPanel::EventLogPanel(QWidget* parent) : QWidget(parent) {
     row->addWidget(missesOnly_);
     row->addWidget(reason_);
     row->addWidget(follow_);
+    shown_ = new QLabel(this);
+    shown_->setToolTip("The log keeps the newest rays; Misses only, a reason, or Go to step reach older ones");
+    shown_->hide();
+    row->addWidget(shown_);
     row->addStretch(1);
     layout->addLayout(row);
     model_ = new EventLogModel(this);
@@ -64,6 +70,10 @@ void EventLogPanel::setReason(rc::MissReason r) {
 
 void EventLogPanel::refresh(const rc::SessionState* state) {
     model_->setState(state);
+    shown_->setVisible(model_->total() > model_->rowCount());
+    if (shown_->isVisible())
+        shown_->setText(QString("newest %1 of %2").arg(QLocale().toString(model_->rowCount()),
+                                                      QLocale().toString(model_->total())));
     if (follow_->isChecked() && model_->rowCount() > 0) table_->scrollToBottom();
 }
 

@@ -7,6 +7,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QTableView;
 
 namespace rcgui {
@@ -38,6 +39,7 @@ private:
     EventLogModel* model_;
     QTableView* table_;
     QCheckBox* missesOnly_;
+    QLabel* shown_;  ///< how many of the events the table holds, when not all
     QCheckBox* follow_;
     QComboBox* reason_;
 };

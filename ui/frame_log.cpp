@@ -1,5 +1,8 @@
 #include "frame_log.h"
 
+#include <ctime>
+
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QMetaEnum>
 #include <QThread>
@@ -24,13 +27,24 @@ void FrameLog::record(const QString& name, double milliseconds) {
     ++lines_;
 }
 
-double FrameLog::sinceStart() {
-    static QElapsedTimer start = [] {
+double FrameLog::now() {
+    static const bool cpu = qEnvironmentVariable("RAYCACHE_FRAME_CLOCK") == "cpu";
+    if (cpu) {
+        timespec t{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+        return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+    }
+    static QElapsedTimer wall = [] {
         QElapsedTimer t;
         t.start();
         return t;
     }();
-    return double(start.nsecsElapsed()) * 1e-6;
+    return double(wall.nsecsElapsed()) * 1e-6;
+}
+
+double FrameLog::sinceStart() {
+    static const double start = now();
+    return now() - start;
 }
 
 bool TimedApplication::notify(QObject* receiver, QEvent* event) {
@@ -41,10 +55,9 @@ bool TimedApplication::notify(QObject* receiver, QEvent* event) {
         // Inside a task: a widget's paint is logged too (lower case), to tell which view costs
         if (event->type() != QEvent::Paint || !receiver) return QApplication::notify(receiver, event);
         const QString name = QString("paint:") + receiver->metaObject()->className();
-        QElapsedTimer timer;
-        timer.start();
+        const double start = FrameLog::now();
         const bool handled = QApplication::notify(receiver, event);
-        log.record(name, double(timer.nsecsElapsed()) * 1e-6);
+        log.record(name, FrameLog::now() - start);
         return handled;
     }
     // An outermost event of the UI thread: one task (the events it sends are part of it)
@@ -52,12 +65,11 @@ bool TimedApplication::notify(QObject* receiver, QEvent* event) {
     const char* type = QMetaEnum::fromType<QEvent::Type>().valueToKey(event->type());
     const int typeNumber = int(event->type());
     const char* cls = receiver ? receiver->metaObject()->className() : "none";
-    QElapsedTimer timer;
-    timer.start();
+    const double start = FrameLog::now();
     ++depth_;
     const bool handled = QApplication::notify(receiver, event);
     --depth_;
-    const double ms = double(timer.nsecsElapsed()) * 1e-6;
+    const double ms = FrameLog::now() - start;
     log.record(QString("%1:%2").arg(type ? QString(type) : QString::number(typeNumber), QString(cls)), ms);
     // The first window painted: how long the user waited for it
     if (!firstFrame_ && paintSeen_) {

@@ -3,7 +3,6 @@
 /// \brief The frame log: how long each task of the UI thread took, so that anyone can
 /// check that the window never freezes (`raycache-gui --frame-log FILE`).
 #include <QApplication>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QString>
 
@@ -26,8 +25,12 @@ public:
     /// Lines written so far.
     int lines() const { return lines_; }
     /// Milliseconds since the process started (since the first call of this function,
-    /// which main() makes first thing).
+    /// which main() makes first thing), on the log's clock.
     static double sinceStart();
+    /// The log's clock, in milliseconds: wall time by default (what a user waits), or,
+    /// with the environment variable RAYCACHE_FRAME_CLOCK=cpu, the CPU time of the
+    /// calling thread, which other processes on a busy machine do not inflate.
+    static double now();
 
 private:
     QFile file_;
@@ -50,14 +53,14 @@ private:
 /// Times a named task of the UI thread into the frame log for as long as it lives.
 class FrameTask {
 public:
-    explicit FrameTask(QString name) : name_(std::move(name)) { timer_.start(); }
-    ~FrameTask() { FrameLog::instance().record(name_, double(timer_.nsecsElapsed()) * 1e-6); }
+    explicit FrameTask(QString name) : name_(std::move(name)), start_(FrameLog::now()) {}
+    ~FrameTask() { FrameLog::instance().record(name_, FrameLog::now() - start_); }
     FrameTask(const FrameTask&) = delete;
     FrameTask& operator=(const FrameTask&) = delete;
 
 private:
     QString name_;
-    QElapsedTimer timer_;
+    double start_;
 };
 
 }  // namespace rcgui

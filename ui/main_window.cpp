@@ -1209,6 +1209,11 @@ QString MainWindow::tourCaption() const { return tourCaption_->isVisible() || st
 void MainWindow::setWorkerSessions(bool on) {
     workerSessions_ = on;
     stats_->setThrottled(on);
+    // A long event log is read into the per-pixel layers over several paints (a
+    // screenshot reads it all at once)
+    const std::size_t budget = on ? kLayerEventsPerPaint : 0;
+    overlayPainter_.setEventBudget(budget, [this] { QTimer::singleShot(0, view_, [this] { view_->update(); }); });
+    comparePainter_.setEventBudget(budget, [this] { QTimer::singleShot(0, compareView_, [this] { compareView_->update(); }); });
 }
 
 void MainWindow::setMissFilter(rc::MissReason r) {

@@ -59,9 +59,12 @@ public:
 
     void setErrorReporter(ErrorReporter r) { reportError_ = std::move(r); }
     /// Builds each new render on the worker, so that the window never waits for a large
-    /// scene's render to be made (the interactive window; tests and screenshots build
-    /// them here, and have their state at once).
+    /// scene's render to be made, and reads long event logs into the overlay layers over
+    /// several paints (the interactive window; tests and screenshots build them here, and
+    /// have their state and layers at once).
     void setWorkerSessions(bool on);
+    /// Events of the log each layer reads in one paint of the interactive window.
+    static constexpr std::size_t kLayerEventsPerPaint = 100000;
 
     /// Loads a built-in scene spec or an NFF file and starts a new render of it. On an
     /// error, reports it (file:line:column: message) and keeps the current scene.

@@ -85,6 +85,7 @@ void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlay
     const QRectF visible = p.transform().inverted().mapRect(device);
     const double mx = visible.width() * 0.05 + 1.0, my = visible.height() * 0.05 + 1.0;
     proj.setClip(visible.adjusted(-mx, -my, mx, my));
+    pending_ = false;
     if (o.frontier) paintFrontier(p, s, scale, false);
     if (o.misses) paintMisses(p, s, scale, sel);
     if (sel.object >= 0 && sel.object < s.scene().size()) {
@@ -117,6 +118,8 @@ void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlay
     }
     // The queue on top of everything: it is small and it is where the action is
     if (o.frontier) paintFrontier(p, s, scale, true);
+    // A layer left events unread: the next paint reads on
+    if (pending_ && more_) more_();
 }
 
 void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj,
@@ -259,32 +262,36 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
     const rc::FrontierView f = s.session().order().frontier();
     const rc::TraceRecorder& rec = s.recorder();
     const int w = s.width(), h = s.height();
-    // Regions of the path being filled: finished ones tinted, the current one bright
+    // Regions of the path being filled: the current one tinted, finished ones only
+    // outlined, so that their tints do not stripe the picture
     if (!markers && f.path >= 0) {
-        if (cachedState_ != s.serial() || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
-            // The region being filled is tinted; finished ones are only outlined, so that
-            // their tints do not stripe the picture
+        const rc::PathIndex::Update u = regionsIndex_.update(rec, s.serial(), f.path, eventBudget_);
+        pending_ = pending_ || !u.complete;
+        if (u.rebuilt || !u.pixels.empty() || regionsCurrent_ != f.region || regions_.size() != QSize(w, h)) {
+            // One pass over the index, a row and the row below at a time
+            auto regionAt = [&](int x, int y) {
+                if (x < 0 || y < 0 || x >= w || y >= h) return -1;
+                const rc::PathIndex::Entry& e = regionsIndex_.at(y * w + x);
+                return e.event < 0 ? -1 : int(e.region);
+            };
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             regions_.fill(Qt::transparent);
-            // Each pixel's region at this path, looked up once
-            std::vector<int> region(std::size_t(w) * std::size_t(h), -1);
-            for (int px = 0; px < w * h; ++px)
-                if (const int i = rec.eventAt(px, f.path); i >= 0) region[std::size_t(px)] = rec.events()[std::size_t(i)].region;
-            auto regionAt = [&](int x, int y) {
-                return x < 0 || y < 0 || x >= w || y >= h ? -1 : region[std::size_t(y) * std::size_t(w) + std::size_t(x)];
-            };
             const QRgb current = qPremultiply(withAlpha(palette::kRegion, 120).rgba());
             const QRgb edge = qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba());
-            for (int y = 0; y < h; ++y)
+            std::vector<int> row(std::size_t(w) + 1, -1), below(std::size_t(w) + 1, -1);
+            for (int x = 0; x < w; ++x) row[std::size_t(x)] = regionAt(x, 0);
+            for (int y = 0; y < h; ++y) {
+                for (int x = 0; x < w; ++x) below[std::size_t(x)] = regionAt(x, y + 1);
+                auto* line = reinterpret_cast<QRgb*>(regions_.scanLine(y));
                 for (int x = 0; x < w; ++x) {
-                    const int region = regionAt(x, y);
+                    const int region = row[std::size_t(x)];
                     if (region < 0) continue;
-                    if (region == f.region) regions_.setPixel(x, y, current);
-                    else if (regionAt(x + 1, y) != region || regionAt(x, y + 1) != region) regions_.setPixel(x, y, edge);
+                    if (region == f.region) line[x] = current;
+                    else if (row[std::size_t(x) + 1] != region || below[std::size_t(x)] != region) line[x] = edge;
                 }
-            cachedState_ = s.serial();
-            cachedEvents_ = rec.events().size();
-            cachedPath_ = f.path;
+                row.swap(below);
+            }
+            regionsCurrent_ = f.region;
         }
         p.save();
         p.setRenderHint(QPainter::SmoothPixmapTransform, scale < 1.0);
@@ -315,19 +322,23 @@ void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double 
     const int w = s.width(), h = s.height();
     const auto focus = rc::RayFocus::of(s, sel);
     const int path = focus ? focus->node : 0;
-    if (missesState_ != s.serial() || missesEvents_ != rec.events().size() || missesPath_ != path) {
+    const rc::PathIndex::Update u = missesIndex_.update(rec, s.serial(), path, eventBudget_);
+    pending_ = pending_ || !u.complete;
+    // A pixel's colour: its miss's reason at the path, transparent for anything else
+    auto colour = [&](int px) {
+        const rc::PathIndex::Entry& e = missesIndex_.at(px);
+        if (e.event < 0 || rc::Decision(e.decision) != rc::Decision::Miss) return QRgb(0);
+        return qPremultiply(palette::missReason(rc::MissReason(e.reason)).rgba());
+    };
+    if (u.rebuilt || misses_.size() != QSize(w, h)) {
         misses_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
-        misses_.fill(Qt::transparent);
-        for (int px = 0; px < w * h; ++px) {
-            const int i = rec.eventAt(px, path);
-            if (i < 0) continue;
-            const rc::EventRecord& r = rec.events()[std::size_t(i)];
-            if (r.rayDecision() == rc::Decision::Miss)
-                misses_.setPixel(px % w, px / w, qPremultiply(palette::missReason(r.missReason()).rgba()));
+        for (int y = 0; y < h; ++y) {
+            auto* line = reinterpret_cast<QRgb*>(misses_.scanLine(y));
+            for (int x = 0; x < w; ++x) line[x] = colour(y * w + x);
         }
-        missesState_ = s.serial();
-        missesEvents_ = rec.events().size();
-        missesPath_ = path;
+    } else {
+        // Only the pixels whose event changed since the last paint
+        for (int px : u.pixels) reinterpret_cast<QRgb*>(misses_.scanLine(px / w))[px % w] = colour(px);
     }
     // Smaller than a screen pixel: blended, so that no miss drops out of the picture
     p.save();

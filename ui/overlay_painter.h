@@ -2,12 +2,15 @@
 /// \file
 /// \brief Draws the overlays (cylinder of safety, blocker hull, breadth-first frontier,
 /// miss markers, selection) over the image, and their legend.
+#include <functional>
+
 #include <QImage>
 #include <QPainter>
 #include <QStringList>
 
 #include "overlay_options.h"
 #include "view/overlay_shapes.h"
+#include "view/path_index.h"
 #include "view/ray_focus.h"
 
 namespace rcgui {
@@ -54,6 +57,15 @@ public:
     const QRectF& legendKey() const { return legendKey_; }
     /// The width the last caption and key wanted beside the image (widget pixels).
     double legendWidth() const { return legendWidth_; }
+    /// Events a paint reads into the per-pixel layers at most (0: all): a long log is
+    /// read over several paints, so that no paint stalls the window. `more` is called
+    /// when a paint left events unread, to ask for the next one.
+    void setEventBudget(std::size_t events, std::function<void()> more) {
+        eventBudget_ = events;
+        more_ = std::move(more);
+    }
+    /// Whether the last paint left events unread in a per-pixel layer.
+    bool layersPending() const { return pending_; }
 
 private:
     void paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f,
@@ -77,13 +89,13 @@ private:
     QRectF legendKey_;
     double legendWidth_ = 0.0;
     double lineScale_ = 1.0;
-    std::uint64_t cachedState_ = 0;  ///< rc::SessionState::serial() of the cached layer
-    std::size_t cachedEvents_ = 0;
-    int cachedPath_ = -1;
+    std::size_t eventBudget_ = 0;
+    std::function<void()> more_;
+    bool pending_ = false;
+    rc::PathIndex regionsIndex_;  ///< each pixel's event at the path being filled
+    int regionsCurrent_ = -1;     ///< the region tinted in regions_
     QImage regions_;
-    std::uint64_t missesState_ = 0;  ///< the same for the misses layer
-    std::size_t missesEvents_ = 0;
-    int missesPath_ = -1;
+    rc::PathIndex missesIndex_;   ///< each pixel's event at the path in focus
     QImage misses_;
 };
 

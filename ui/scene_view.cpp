@@ -176,9 +176,30 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent) {
     connect(wholeBox_, &QCheckBox::toggled, this, &SceneView::setWholeScene);
 }
 
+namespace {
+
+/// What the bodies' layer shows of a sketch: each body, and which are drawn bold.
+bool sameBodies(const SceneSketch& a, const SceneSketch& b) {
+    auto bold = [](const SceneSketch& k) {
+        std::vector<int> ids = k.hull.blockers;
+        ids.insert(ids.end(), {k.hull.targetObject, k.limiter, k.focus ? k.focus->hit : -2,
+                               k.focus ? k.focus->origin.object : -2});
+        return ids;
+    };
+    auto same = [](const SceneSketch::Body& x, const SceneSketch::Body& y) {
+        return x.id == y.id && x.shape == y.shape && x.bound.c == y.bound.c && x.bound.r == y.bound.r &&
+               x.polygon == y.polygon;
+    };
+    return std::equal(a.bodies.begin(), a.bodies.end(), b.bodies.begin(), b.bodies.end(), same) &&
+           a.hull.valid() == b.hull.valid() && bold(a) == bold(b);
+}
+
+}  // namespace
+
 void SceneView::setSketch(SceneSketch sketch) {
+    // The bodies' layer is drawn again only when what it shows has changed
+    if (!sameBodies(sketch, sketch_)) ++sketchSerial_;
     sketch_ = std::move(sketch);
-    ++sketchSerial_;
     update();
 }
 
@@ -297,10 +318,14 @@ void SceneView::paintBodies(QPainter& p, const std::vector<bool>& blocker, int t
             p.setPen(pen(line, (bold ? 2.5 : 1.0) * lw));
             p.setBrush(QColor(90, 90, 100, 90));
             p.drawPolygon(poly);
+        } else if (const QRectF d = disc(b.bound); !bold && d.width() < 4.0 * lw) {
+            // A body a few pixels across: a dot in its outline's colour (thousands of
+            // antialiased outlines that small would only cost time)
+            p.fillRect(d, line);
         } else {
             p.setPen(pen(line, (bold ? 3.0 : 1.2) * lw, b.shape == rc::Shape::Cone ? Qt::DashLine : Qt::SolidLine));
             p.setBrush(QColor(70, 72, 84, 200));
-            p.drawEllipse(disc(b.bound));
+            p.drawEllipse(d);
         }
     }
 }

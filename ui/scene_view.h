@@ -99,7 +99,7 @@ protected:
 private:
     void frame();
     SceneSketch sketch_;
-    std::uint64_t sketchSerial_ = 0;  ///< setSketch() calls, for the bodies' layer
+    std::uint64_t sketchSerial_ = 0;  ///< sketches whose bodies' layer differs, for that layer
     QPixmap bodies_;                  ///< the scene's objects as last drawn
     std::vector<double> bodiesKey_;   ///< what they were drawn for (sketch, size, projection)
     /// Draws the objects on screen, farthest first; potential blockers, the target and

@@ -3,6 +3,8 @@
 // the event log's reason filter and the frame log.
 #include <catch2/catch.hpp>
 
+#include <memory>
+
 #include <QAction>
 #include <QDir>
 #include <QFile>
@@ -19,6 +21,7 @@
 #include "image_view.h"
 #include "main_window.h"
 #include "ray_tree_panel.h"
+#include "scene/builtin_scenes.h"
 #include "stats_panel.h"
 #include "view/miss_cause.h"
 #include "view/ray_focus.h"
@@ -307,4 +310,37 @@ TEST_CASE("The frame log (--frame-log) writes one line per UI-thread task, first
     REQUIRE(gui.waitForFinished(60000));
     REQUIRE(gui.exitCode() == 2);
     REQUIRE(QString::fromUtf8(gui.readAllStandardError()).contains(bad.fileName() + ":2:3: stop 1 (x): --zoom must be"));
+}
+
+TEST_CASE("The event log holds the newest rays of a long render, a bounded number of rows", "[gui][stall]") {
+    rc::RenderOptions ro;
+    ro.cache = rc::CacheKind::Blocker;
+    ro.order = rc::OrderKind::Scanline;
+    ro.width = ro.height = 256;
+    rc::SessionState s({std::make_shared<const rc::Scene>(rc::loadScene("pair")), ro});
+    EventLogModel model;
+    // Grown a step at a time, as a live window refreshes
+    for (std::int64_t step : {20000, 60000, 90000}) {
+        REQUIRE(s.runUntil(rc::RunGoal::ToStep, step));
+        model.setState(&s);
+        REQUIRE(model.total() == int(s.recorder().events().size()));
+        REQUIRE(model.rowCount() == std::min(model.total(), EventLogModel::kMaxRows));
+    }
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    model.setState(&s);
+    const int events = int(s.recorder().events().size());
+    REQUIRE(events > EventLogModel::kMaxRows);
+    REQUIRE(model.total() == events);
+    REQUIRE(model.rowCount() == EventLogModel::kMaxRows);
+    // The rows are the newest events, oldest first
+    REQUIRE(model.eventAt(0) == events - EventLogModel::kMaxRows);
+    REQUIRE(model.eventAt(model.rowCount() - 1) == events - 1);
+    REQUIRE(model.data(model.index(model.rowCount() - 1, 0), Qt::DisplayRole).toLongLong() ==
+            s.recorder().events()[std::size_t(events - 1)].step);
+    // Misses only: the misses and deferrals, newest last
+    REQUIRE(!s.recorder().misses().empty());
+    model.setMissesOnly(true);
+    REQUIRE(model.total() == int(s.recorder().misses().size()));
+    REQUIRE(model.rowCount() == std::min(model.total(), EventLogModel::kMaxRows));
+    REQUIRE(model.eventAt(model.rowCount() - 1) == s.recorder().misses()[s.recorder().misses().size() - 1]);
 }
