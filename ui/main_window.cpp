@@ -31,6 +31,7 @@
 #include "frame_log.h"
 #include "heatmap_builder.h"
 #include "image_view.h"
+#include "view/overlay_layers.h"
 #include "labels.h"
 #include "objects_panel.h"
 #include "ray_tree_panel.h"
@@ -704,20 +705,10 @@ bool MainWindow::selectRay(int x, int y, const QString& path, QString& error) {
     }
     selectPixel(x, y);
     if (path.isEmpty()) return true;
-    // Paths are compared without spaces and case: "eye/reflection/shadow1" names "shadow 1"
-    auto norm = [](QString t) { return t.remove(' ').toLower(); };
-    const rc::CacheTree& tree = s->session().cacheTree();
-    QStringList have;
-    int found = -1;
-    for (int i : s->recorder().eventsOf(y * s->width() + x)) {
-        const rc::EventRecord& r = s->recorder().events()[std::size_t(i)];
-        const QString label = QString::fromStdString(tree.label(r.node));
-        if (!have.contains(label)) have << label;
-        if (norm(label) == norm(path) && (found < 0 || !r.deferred())) found = i;
-    }
+    std::string why;
+    const int found = rc::eventAtPath(*s, y * s->width() + x, path.toStdString(), why);
     if (found < 0) {
-        error = QString("pixel (%1,%2) has no ray at path '%3'; its rays: %4")
-                    .arg(x).arg(y).arg(path).arg(have.isEmpty() ? QString("none yet") : have.join(", "));
+        error = QString::fromStdString(why);
         return false;
     }
     return selectEvent(found);

@@ -1,6 +1,6 @@
 #include "overlay_painter.h"
 
-#include "view/miss_cause.h"
+#include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 
 #include <algorithm>
@@ -263,25 +263,17 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
     if (!markers && f.path >= 0) {
         if (cachedState_ != s.serial() || cachedEvents_ != rec.events().size() || cachedPath_ != f.path) {
             // The region being filled is tinted; finished ones are only outlined, so that
-            // their tints do not stripe the picture
+            // their tints do not stripe the picture (rc::regionLayer marks them)
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             regions_.fill(Qt::transparent);
-            // Each pixel's region at this path, looked up once
-            std::vector<int> region(std::size_t(w) * std::size_t(h), -1);
-            for (int px = 0; px < w * h; ++px)
-                if (const int i = rec.eventAt(px, f.path); i >= 0) region[std::size_t(px)] = rec.events()[std::size_t(i)].region;
-            auto regionAt = [&](int x, int y) {
-                return x < 0 || y < 0 || x >= w || y >= h ? -1 : region[std::size_t(y) * std::size_t(w) + std::size_t(x)];
-            };
+            const std::vector<std::uint8_t> marks = rc::regionLayer(s);
             const QRgb current = qPremultiply(withAlpha(palette::kRegion, 120).rgba());
             const QRgb edge = qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba());
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x) {
-                    const int region = regionAt(x, y);
-                    if (region < 0) continue;
-                    if (region == f.region) regions_.setPixel(x, y, current);
-                    else if (regionAt(x + 1, y) != region || regionAt(x, y + 1) != region) regions_.setPixel(x, y, edge);
-                }
+            for (int px = 0; px < w * h; ++px) {
+                const auto m = rc::RegionMark(marks[std::size_t(px)]);
+                if (m == rc::RegionMark::Current) regions_.setPixel(px % w, px / w, current);
+                else if (m == rc::RegionMark::Edge) regions_.setPixel(px % w, px / w, edge);
+            }
             cachedState_ = s.serial();
             cachedEvents_ = rec.events().size();
             cachedPath_ = f.path;
@@ -318,13 +310,10 @@ void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double 
     if (missesState_ != s.serial() || missesEvents_ != rec.events().size() || missesPath_ != path) {
         misses_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
         misses_.fill(Qt::transparent);
-        for (int px = 0; px < w * h; ++px) {
-            const int i = rec.eventAt(px, path);
-            if (i < 0) continue;
-            const rc::EventRecord& r = rec.events()[std::size_t(i)];
-            if (r.rayDecision() == rc::Decision::Miss)
-                misses_.setPixel(px % w, px / w, qPremultiply(palette::missReason(r.missReason()).rgba()));
-        }
+        const std::vector<std::uint8_t> reasons = rc::missLayer(s, path);
+        for (int px = 0; px < w * h; ++px)
+            if (reasons[std::size_t(px)])
+                misses_.setPixel(px % w, px / w, qPremultiply(palette::missReason(rc::MissReason(reasons[std::size_t(px)])).rgba()));
         missesState_ = s.serial();
         missesEvents_ = rec.events().size();
         missesPath_ = path;
@@ -341,28 +330,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     QStringList caption;
     std::vector<std::pair<QColor, QString>> keys;
     const rc::RenderSession& session = s.session();
-    caption << QString("%1  %2/%3  %4  step %5")
-                   .arg(QString::fromStdString(s.scene().name))
-                   .arg(QString::fromUtf8(rc::toString(session.strategy().kind()).data()))
-                   .arg(QString::fromUtf8(rc::toString(session.order().kind()).data()))
-                   .arg(QString("%1x%2").arg(s.width()).arg(s.height()))
-                   .arg(session.steps());
+    for (const std::string& line : rc::focusCaption(s, sel)) caption << QString::fromStdString(line);
     const auto focus = rc::RayFocus::of(s, sel);
-    if (focus) {
-        const rc::RayFocus& f = *focus;
-        QString d = QString::fromUtf8(rc::toString(f.decision).data());
-        if (f.reason != rc::MissReason::None)
-            d += QString(" (%1)").arg(QString::fromUtf8(rc::toString(f.reason).data()));
-        if (f.deferred) d = "deferred: " + d;
-        caption << QString("%1 pixel (%2,%3)  %4  hit %5  %6  %7 tests")
-                       .arg(f.selected ? "selected:" : "ray:")
-                       .arg(f.pixel % s.width()).arg(f.pixel / s.width())
-                       .arg(QString::fromStdString(session.cacheTree().label(f.node)))
-                       .arg(f.deferred ? QString("?") : f.hit >= 0 ? QString("#%1").arg(f.hit) : QString("nothing"))
-                       .arg(d).arg(f.tests);
-    } else if (sel.pixel >= 0) {
-        caption << QString("selected pixel (%1,%2): not traced yet").arg(sel.pixel % s.width()).arg(sel.pixel / s.width());
-    }
     if (o.hull || o.cylinder)
         keys.push_back({palette::kRay, focus && focus->selected ? "selected ray" : "ray being traced"});
     if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
@@ -429,18 +398,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     }
     // A miss in focus: what caused it, in words and in red
     if (focus && (o.hull || o.cylinder)) {
-        const rc::MissCause c = rc::missCauseOf(s, *focus);
-        const QString was = c.cachedObject >= 0 ? QString("#%1").arg(c.cachedObject) : QString("nothing");
-        if (c.reason == rc::MissReason::TargetMissed)
-            keys.push_back({palette::kMissCause, QString("miss: the cached target %1 is not hit").arg(was)});
-        else if (c.reason == rc::MissReason::BlockerHit)
-            keys.push_back({palette::kMissCause, QString("miss: blocker #%1 is hit before the cached %2").arg(c.blocker).arg(was)});
-        else if (c.reason == rc::MissReason::LeftCylinder && c.cylinder.radius > 0.0)
-            keys.push_back({palette::kMissCause, QString("miss: the ray leaves the cached cylinder (r %1, cached %2)")
-                                                     .arg(c.cylinder.radius, 0, 'g', 3).arg(was)});
-        else if (c.valid())
-            keys.push_back({palette::kMissCause, QString("miss (%1); the entry held %2")
-                                                     .arg(QString::fromUtf8(rc::toString(c.reason).data()), was)});
+        const std::string cause = rc::missCauseText(s, *focus);
+        if (!cause.empty()) keys.push_back({palette::kMissCause, QString::fromStdString(cause)});
     }
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});

@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// \brief The per-pixel overlays of a render (miss markers by reason, the breadth-first
+/// regions), the caption of the ray in focus, and a ray chosen by its pixel and path:
+/// what every viewer shows beside rc::focusShapes, made once here.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "view/ray_focus.h"
+
+namespace rc {
+
+/// For each pixel, the reason (rc::MissReason's number) of its committed cache miss at
+/// ray-tree path `path`; 0 where its ray there was no miss or is not traced yet.
+std::vector<std::uint8_t> missLayer(const SessionState& s, int path);
+
+/// What a pixel shows of the breadth-first fill at the path being filled.
+enum class RegionMark : std::uint8_t { None = 0, Current = 1, Edge = 2 };
+/// For each pixel, a RegionMark: in the region being filled, on the edge of a finished
+/// region (its right or lower neighbour lies in another), or neither. All None when the
+/// order has no frontier.
+std::vector<std::uint8_t> regionLayer(const SessionState& s);
+
+/// The caption of a render: its scene, cache, order, size and step, then the ray in focus
+/// (pixel, path, what it hit, the cache's decision, its tests), or the selected pixel
+/// not traced yet.
+std::vector<std::string> focusCaption(const SessionState& s, const Selection& sel);
+
+/// What caused the miss of the ray in focus, in words (empty when it is not a miss whose
+/// entry is known).
+std::string missCauseText(const SessionState& s, const RayFocus& f);
+
+/// The recorded event of pixel `pixel` at path `path` (a cache-tree label such as
+/// "eye/reflection", compared without spaces and case), preferring a committed one;
+/// -1 with `error` saying which paths the pixel has.
+int eventAtPath(const SessionState& s, int pixel, const std::string& path, std::string& error);
+
+}  // namespace rc
