@@ -666,29 +666,8 @@ void MainWindow::setAccel(rc::AccelKind k) {
 int MainWindow::focusShowcase() {
     const rc::SessionState* s = controller_.state();
     if (!s) return -1;
-    const rc::BlockerLists* lists = s->session().strategy().blockerLists();
-    const auto& events = s->recorder().events();
-    // The newest committed reflection ray that hit an object with potential blockers in
-    // the hull between the two (the paper's Figure 2 on screen); else such an eye ray;
-    // failing that, the newest hit
-    int best = -1;
-    for (const bool reflected : {true, false}) {
-        for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i) {
-            const rc::EventRecord& r = events[std::size_t(i)];
-            if (r.deferred() || r.hit < 0) continue;
-            if (reflected != (r.rayKind() == rc::RayKind::Reflection) || (!reflected && r.node != 0)) continue;
-            if (!lists) {
-                best = i;
-                break;
-            }
-            const int origin = r.origin >= 0 ? r.origin : lists->eyeSite();
-            const std::vector<int>* l = lists->find(origin, r.hit);
-            if (l && !l->empty()) best = i;
-        }
-        if (best >= 0) break;
-    }
-    for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i)
-        if (!events[std::size_t(i)].deferred() && events[std::size_t(i)].hit >= 0) best = i;
+    // The paper's Figure 2 on screen, or the newest hit (rc::showcaseEvent)
+    const int best = rc::showcaseEvent(*s);
     if (best >= 0) selectEvent(best);
     return best;
 }

@@ -144,6 +144,13 @@ public:
         selection_.event = eventAtPath(*state_, selection_.pixel, path, why);
         return why;
     }
+    /// Puts a ray worth showing in focus (rc::showcaseEvent), as the Qt GUI does for a
+    /// stop that shows the scene view without choosing a ray. False when none is traced.
+    bool showcase() {
+        selection_ = {};
+        selection_.event = showcaseEvent(*state_);
+        return selection_.event >= 0;
+    }
     void clearSelection() { selection_ = {}; }
     int selectedPixel() const { return selection_.pixel; }
 
@@ -295,6 +302,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("runToStep", &WebRender::runToStep)
         .function("runUntil", &WebRender::runUntil)
         .function("select", &WebRender::select)
+        .function("showcase", &WebRender::showcase)
         .function("clearSelection", &WebRender::clearSelection)
         .function("selectedPixel", &WebRender::selectedPixel)
         .function("image", &WebRender::image)

@@ -60,6 +60,7 @@ function renderWorkerMain(self, RayCache) {
     } else if (m.run) {
       notes.push('run ' + m.run + ': not in the web viewer');
     }
+    if (m.showcase) render.showcase();
     if (m.select) {
       const [xy, path] = m.select.split(':');
       const [x, y] = xy.split(',').map(Number);

@@ -162,7 +162,9 @@
       zoomAbout = +s.get('zoom');
     }
     open({ steps: +(s.get('steps') || 0), run: s.get('run') || '', missReason: s.get('miss-reason') || '',
-           select: s.get('select') || '' });
+           select: s.get('select') || '',
+           // The Qt GUI's rule: a scene view with no ray chosen shows a ray worth seeing
+           showcase: s.has('scene-view') && !s.has('select') && !s.has('run') });
   }
 
   // A stop's zoom: the image rectangle `zoomAbout` times smaller, about the pixel in focus

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdio>
 
+#include "search/blocker_lists.h"
 #include "view/miss_cause.h"
 
 namespace rc {
@@ -103,6 +104,27 @@ int eventAtPath(const SessionState& s, int pixel, const std::string& path, std::
     for (const std::string& h : have) list += (list.empty() ? "" : ", ") + h;
     error = "pixel (" + std::to_string(pixel % s.width()) + "," + std::to_string(pixel / s.width()) +
             ") has no ray at path '" + path + "'; its rays: " + (list.empty() ? "none yet" : list);
+    return -1;
+}
+
+int showcaseEvent(const SessionState& s) {
+    const BlockerLists* lists = s.session().strategy().blockerLists();
+    const auto& events = s.recorder().events();
+    int best = -1;
+    for (const bool reflected : {true, false}) {
+        for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i) {
+            const EventRecord& r = events[std::size_t(i)];
+            if (r.deferred() || r.hit < 0) continue;
+            if (reflected != (r.rayKind() == RayKind::Reflection) || (!reflected && r.node != 0)) continue;
+            if (!lists) return i;
+            const int origin = r.origin >= 0 ? r.origin : lists->eyeSite();
+            const std::vector<int>* l = lists->find(origin, r.hit);
+            if (l && !l->empty()) best = i;
+        }
+        if (best >= 0) return best;
+    }
+    for (int i = int(events.size()) - 1; i >= 0; --i)
+        if (!events[std::size_t(i)].deferred() && events[std::size_t(i)].hit >= 0) return i;
     return -1;
 }
 

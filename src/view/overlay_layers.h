@@ -36,4 +36,10 @@ std::string missCauseText(const SessionState& s, const RayFocus& f);
 /// -1 with `error` saying which paths the pixel has.
 int eventAtPath(const SessionState& s, int pixel, const std::string& path, std::string& error);
 
+/// A ray worth showing when none is chosen (the paper's Figure 2 on screen): the newest
+/// committed reflection ray that hit an object with potential blockers listed between the
+/// two; else such an eye ray; failing that, the newest hit (any hit without blocker
+/// lists). Its recorded event, -1 when nothing was hit yet.
+int showcaseEvent(const SessionState& s);
+
 }  // namespace rc
