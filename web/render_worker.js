@@ -11,24 +11,45 @@ function renderWorkerMain(self, RayCache) {
   // What the page shows: which overlays, and the image rectangle they are clipped to
   let view = { cylinder: false, hull: false, frontier: false, misses: false, clip: null };
 
-  function frame(extra) {
-    const image = render.image().slice();
-    const heat = render.heat().slice();
-    const misses = view.misses ? render.missReasons().slice() : new Uint8Array(0);
-    const regions = view.frontier ? render.regions().slice() : new Uint8Array(0);
-    const w = render.width(), h = render.height();
+  let compare = null;   // a second render beside the first (another cache and order), in lockstep
+
+  // What the page draws of one render
+  function picture(r, buffers) {
+    const image = r.image().slice();
+    const heat = r.heat().slice();
+    const misses = view.misses ? r.missReasons().slice() : new Uint8Array(0);
+    const regions = view.frontier ? r.regions().slice() : new Uint8Array(0);
+    buffers.push(image.buffer, heat.buffer, misses.buffer, regions.buffer);
+    const w = r.width(), h = r.height();
     const c = view.clip || [0, 0, w, h];
     // The margin keeps cut edges off the picture (as the Qt GUI's)
     const mx = (c[2] - c[0]) * 0.05 + 1, my = (c[3] - c[1]) * 0.05 + 1;
     const shapes = view.cylinder || view.hull
-      ? render.shapes(view.cylinder, view.hull, c[0] - mx, c[1] - my, c[2] + mx, c[3] + my) : [];
-    self.postMessage(Object.assign({
-      type: 'frame', width: w, height: h, image, heat, misses, regions, shapes,
-      frontier: view.frontier ? render.frontier() : null, legend: render.legend(),
-      statistics: JSON.parse(render.statistics()), caption: render.caption(),
-      focusPixel: render.focusPixel(), selectedPixel: render.selectedPixel(),
-      done: render.done(), progress: render.progress(), running,
-    }, extra || {}), [image.buffer, heat.buffer, misses.buffer, regions.buffer]);
+      ? r.shapes(view.cylinder, view.hull, c[0] - mx, c[1] - my, c[2] + mx, c[3] + my) : [];
+    return {
+      width: w, height: h, image, heat, misses, regions, shapes,
+      frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
+      statistics: JSON.parse(r.statistics()), caption: r.caption(),
+      focusPixel: r.focusPixel(), selectedPixel: r.selectedPixel(), done: r.done(),
+    };
+  }
+
+  // The compared render goes to the first's step: every render has the same rays, so
+  // when the first is done, so is the second
+  function syncCompare() {
+    if (!compare) return;
+    compare.runToStep(render.steps());
+    if (render.done() && !compare.done()) compare.run(1 << 30);
+  }
+
+  function frame(extra) {
+    const buffers = [];
+    syncCompare();
+    const first = picture(render, buffers);
+    const second = compare ? picture(compare, buffers) : null;
+    self.postMessage(Object.assign({ type: 'frame' }, first, {
+      compare: second, progress: render.progress(), running,
+    }, extra || {}), buffers);
   }
 
   function tick() {
@@ -66,6 +87,8 @@ function renderWorkerMain(self, RayCache) {
       const [x, y] = xy.split(',').map(Number);
       const why = render.select(x, y, path || '');
       if (why) notes.push('select: ' + why);
+      syncCompare();
+      if (compare) compare.select(x, y, path || '');
     }
     return notes;
   }
@@ -81,6 +104,7 @@ function renderWorkerMain(self, RayCache) {
       running = null;
       if (m.view) view = m.view;
       if (render) { render.delete(); render = null; }
+      if (compare) { compare.delete(); compare = null; }
       let spec = m.scene;
       if (m.nff !== undefined) spec = module.storeSceneFile(m.name || 'dropped.nff', m.nff);
       const error = module.checkScene(spec);
@@ -88,6 +112,7 @@ function renderWorkerMain(self, RayCache) {
       let notes = [];
       try {
         render = new module.Render(spec, m.width | 0, m.height | 0, m.cache, m.order, m.accel);
+        if (m.compare) compare = new module.Render(spec, m.width | 0, m.height | 0, m.compare.cache, m.compare.order, m.accel);
         if (m.stop) notes = goToStop(m.stop);
       } catch (e) {
         self.postMessage({ type: 'error', message: String(e) });
@@ -102,12 +127,14 @@ function renderWorkerMain(self, RayCache) {
       running = null; render.runUntil(m.type, ''); frame();
     } else if (m.type === 'select') {
       const why = render.select(m.x, m.y, '');
+      if (compare) compare.select(m.x, m.y, '');
       frame(why ? { notes: [why] } : {});
     } else if (m.type === 'play' || m.type === 'end') {
       const wasRunning = running;
       running = m.type;
       runMs = 0;
       render.clearSelection();
+      if (compare) compare.clearSelection();
       if (!wasRunning) tick();
     } else if (m.type === 'pause') {
       running = null; frame();

@@ -72,7 +72,9 @@
   function open(stopRays) {
     const width = +$('width').value, height = +$('height').value;
     const m = { type: 'open', width, height, cache: $('cache').value, order: $('order').value,
-                accel: $('accel').value, view: overlayChoice(), stop: stopRays || null };
+                accel: $('accel').value, view: overlayChoice(), stop: stopRays || null, compare: null };
+    const [compareCache, compareOrder] = $('compare').value.split(':');
+    if (compareCache && compareOrder) m.compare = { cache: compareCache, order: compareOrder };
     if ($('scene').value === 'dropped' && dropped) { m.nff = dropped.text; m.name = dropped.name; }
     else m.scene = sceneSpec($('scene').value);
     ++generation;
@@ -104,8 +106,9 @@
       last = m;
       if (m.opened && zoomAbout > 0) zoomView();
       draw();
-      showStatistics(m.statistics);
-      $('caption').textContent = m.caption.trim();
+      showStatistics(m.statistics, m.compare && m.compare.statistics);
+      $('caption').textContent = captionOf(m);
+      canvas.classList.toggle('wide', !!m.compare);
       showKey(m);
       $('play').textContent = m.running === 'play' ? 'Pause' : 'Play';
       if (m.notes && m.notes.length) $('stop-notes').textContent = [stopNotes].concat(m.notes).filter(Boolean).join(' ');
@@ -141,9 +144,15 @@
     $('ov-frontier').checked = has('frontier');
     $('ov-misses').checked = has('misses');
     $('heatmap').checked = s.get('heatmap') === 'tests';
+    const compare = s.get('compare') || '';
+    if (compare && ![...$('compare').options].some((o) => o.value === compare)) {
+      const o = document.createElement('option');
+      o.value = o.textContent = compare;
+      $('compare').appendChild(o);
+    }
+    $('compare').value = compare;
     // What the web viewer leaves to the Qt GUI, said rather than dropped
     const left = [];
-    if (s.has('compare')) left.push('the comparison with ' + s.get('compare') + ' beside it');
     if (s.has('scene-view')) left.push('the scene view (' + (s.get('scene-view') || 'side') + ')');
     if (s.has('panels')) left.push('the panels (' + s.get('panels') + ')');
     if (s.has('heatmap') && s.get('heatmap') !== 'tests') left.push('the ' + s.get('heatmap') + ' heatmap');
@@ -208,15 +217,14 @@
     return [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])];
   }
 
-  // The picture at image size: the image or the heatmap, the regions of the fill, the misses
-  function paintLayer(m) {
+  // The picture at image size: the image or the heatmap (on the scale `most`, shared by
+  // two renders side by side), the regions of the fill, the misses
+  function paintLayer(m, most) {
     if (layer.width !== m.width || layer.height !== m.height) { layer.width = m.width; layer.height = m.height; }
     const out = layerContext.createImageData(m.width, m.height);
     const d = out.data, n = m.width * m.height;
     if ($('heatmap').checked) {
       // Intersection tests per pixel, on a log scale
-      let most = 1;
-      for (let i = 0; i < n; ++i) most = Math.max(most, m.heat[i]);
       const scale = 1 / Math.log1p(most);
       for (let i = 0; i < n; ++i) {
         const c = ramp(Math.log1p(m.heat[i]) * scale);
@@ -238,33 +246,59 @@
     layerContext.putImageData(out, 0, 0);
   }
 
+  let drawnShapes = 0;
+  const drawnRoles = new Set();
+
+  // The render, or the two compared side by side, each in the image rectangle shown
   function draw() {
     const m = last;
     if (!m) return;
-    paintLayer(m);
+    const panes = m.compare ? [m, m.compare] : [m];
     const v = viewRect || [0, 0, m.width, m.height];
     const dpr = window.devicePixelRatio || 1;
     const cssWidth = canvas.getBoundingClientRect().width || 512;
-    const W = Math.round(cssWidth * dpr), H = Math.round(W * (v[3] - v[1]) / (v[2] - v[0]));
+    const W = Math.round(cssWidth * dpr), gap = panes.length > 1 ? Math.round(8 * dpr) : 0;
+    const paneWidth = (W - gap * (panes.length - 1)) / panes.length;
+    const H = Math.round(paneWidth * (v[3] - v[1]) / (v[2] - v[0]));
     if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
-    const s = W / (v[2] - v[0]);
-    const px = dpr / s;  // one CSS pixel, in image units
     context.setTransform(1, 0, 0, 1, 0, 0);
-    context.fillStyle = '#000';
+    context.fillStyle = panes.length > 1 ? '#fff' : '#000';
     context.fillRect(0, 0, W, H);
-    context.setTransform(s, 0, 0, s, -v[0] * s, -v[1] * s);
+    let most = 1;
+    for (const p of panes) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
+    drawnShapes = 0;
+    drawnRoles.clear();
+    panes.forEach((p, k) => {
+      const left = k * (paneWidth + gap);
+      context.save();
+      context.beginPath();
+      context.rect(left, 0, paneWidth, H);
+      context.clip();
+      context.fillStyle = '#000';
+      context.fillRect(left, 0, paneWidth, H);
+      const scale = paneWidth / (v[2] - v[0]);
+      context.setTransform(scale, 0, 0, scale, left - v[0] * scale, -v[1] * scale);
+      drawPane(p, most, dpr / scale);
+      context.restore();
+    });
+    $('overlay-count').textContent = drawnShapes;
+    $('overlay-roles').textContent = [...drawnRoles].sort().join(',');
+  }
+
+  // One render, in image coordinates; `px` is one CSS pixel in image units
+  function drawPane(m, most, px) {
+    paintLayer(m, most);
     context.imageSmoothingEnabled = false;
     context.drawImage(layer, 0, 0);
-    let drawn = 0;
-    const roles = new Set();
     for (const shape of m.shapes) {
-      if (drawShape(shape, px)) { ++drawn; roles.add(shape.role); }
+      if (drawShape(shape, px)) { ++drawnShapes; drawnRoles.add(shape.role); }
     }
     const focus = m.legend.pixel;
     if (m.shapes.length && focus !== undefined) dot(focus % m.width + 0.5, Math.floor(focus / m.width) + 0.5, 5 * px, kRay);
     if (m.selectedPixel >= 0) {
       const cx = m.selectedPixel % m.width + 0.5, cy = Math.floor(m.selectedPixel / m.width) + 0.5;
       const half = Math.max(0.5, 7 * px);
+      widthScale = px;
       strokePath([cx - half, cy - half, cx + half, cy - half, cx + half, cy + half, cx - half, cy + half], true,
                  kSelection, 2.5 * px, false);
     }
@@ -296,8 +330,19 @@
         }
       }
     }
-    $('overlay-count').textContent = drawn;
-    $('overlay-roles').textContent = [...roles].sort().join(',');
+  }
+
+  // The caption (rc::focusCaption's lines); beside a compared render, its own and the
+  // difference in tests, as the Qt GUI's
+  function captionOf(m) {
+    let text = m.caption.trim();
+    if (m.compare) {
+      const a = m.statistics.tests, b = m.compare.statistics.tests;
+      text = 'left: ' + text + '\nright: ' + m.compare.caption.trim() +
+        '\ntests ' + b + ' = ' + (a > 0 ? (b / a).toFixed(2) : '0.00') + 'x the left\'s ' + a +
+        ', difference ' + (b >= a ? '+' : '') + (b - a) + ' tests';
+    }
+    return text;
   }
 
   // A closed outline or a polyline of flat [x, y, ...]: a dark halo, then the colour
@@ -400,6 +445,12 @@
         if (L.misses[r] > 0) keys.push([kMissColours[r], 'miss: ' + names[r] + ' (' + L.misses[r] + ')']);
     }
     if (L.cause && ($('ov-cylinder').checked || $('ov-hull').checked)) keys.push([kMissCause, L.cause]);
+    if ($('heatmap').checked) {
+      let most = 0;
+      for (const p of m.compare ? [m, m.compare] : [m]) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
+      keys.push([ramp(1), 'heatmap: intersection tests per pixel, log scale, 0 to ' + most +
+                 (m.compare ? ', one scale for both' : '')]);
+    }
     if (m.selectedPixel >= 0)
       keys.push([kSelection, 'selected pixel (' + m.selectedPixel % m.width + ',' + Math.floor(m.selectedPixel / m.width) + ')']);
     $('key').innerHTML = '';
@@ -416,14 +467,18 @@
   }
   let kMissNames = [];
 
-  function showStatistics(s) {
-    const rows = [['rays', s.rays], ['eye rays', s.primary], ['shadow rays', s.shadow],
-                  ['reflection rays', s.reflection], ['refraction rays', s.refraction],
-                  ['intersection tests', s.tests], ['complete searches', s.searches],
-                  ['cache hits', s.hits], ['cache misses', s.misses],
-                  ['tests per ray', s.rays ? (s.tests / s.rays).toFixed(2) : '']];
-    $('stats').innerHTML = rows.map(([k, v]) => '<tr><td>' + k + '</td><td>' +
-      (typeof v === 'number' ? v.toLocaleString('en') : v) + '</td></tr>').join('');
+  function showStatistics(...renders) {
+    const rows = [['rays', 'rays'], ['eye rays', 'primary'], ['shadow rays', 'shadow'],
+                  ['reflection rays', 'reflection'], ['refraction rays', 'refraction'],
+                  ['intersection tests', 'tests'], ['complete searches', 'searches'],
+                  ['cache hits', 'hits'], ['cache misses', 'misses'], ['tests per ray', null]];
+    const cell = (s, key) => {
+      const v = key ? s[key] : s.rays ? (s.tests / s.rays).toFixed(2) : '';
+      return '<td>' + (typeof v === 'number' ? v.toLocaleString('en') : v) + '</td>';
+    };
+    const shown = renders.filter(Boolean);
+    $('stats').innerHTML = (shown.length > 1 ? '<tr><td></td><td>left</td><td>right</td></tr>' : '') +
+      rows.map(([label, key]) => '<tr><td>' + label + '</td>' + shown.map((s) => cell(s, key)).join('') + '</tr>').join('');
   }
 
   // The SHA-256 of the 8-bit RGB pixel bytes, rows top to bottom: `raycache render --hash`'s
@@ -439,7 +494,7 @@
     if (params.has(key)) $(key).value = params.get(key);
   $('open').onclick = () => open();
   $('as-written').onclick = () => { if (stop) applyStop(); };
-  for (const id of ['scene', 'width', 'height', 'cache', 'order', 'accel']) $(id).onchange = () => open();
+  for (const id of ['scene', 'width', 'height', 'cache', 'order', 'accel', 'compare']) $(id).onchange = () => open();
   $('step-ray').onclick = () => worker.postMessage({ type: 'ray' });
   $('step-pixel').onclick = () => worker.postMessage({ type: 'pixel' });
   $('step-miss').onclick = () => worker.postMessage({ type: 'miss' });
@@ -455,7 +510,10 @@
     if (!last) return;
     const r = canvas.getBoundingClientRect();
     const v = viewRect || [0, 0, last.width, last.height];
-    const x = Math.floor(v[0] + (e.clientX - r.left) / r.width * (v[2] - v[0]));
+    // Either picture of a comparison: the same pixel in both
+    const panes = last.compare ? 2 : 1;
+    const across = ((e.clientX - r.left) / r.width * panes) % 1;
+    const x = Math.floor(v[0] + across * (v[2] - v[0]));
     const y = Math.floor(v[1] + (e.clientY - r.top) / r.height * (v[3] - v[1]));
     worker.postMessage({ type: 'select', x, y });
   };

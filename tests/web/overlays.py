@@ -12,6 +12,7 @@ the stop's settings ask for, read from #overlay-roles (the roles of rc::focusSha
   and a left_cylinder miss shows the cylinder left (CylinderLeft);
 - neither cylinder nor cone: no shape at all;
 - frontier: the key counts the queue; misses: the key names the path marked;
+- compare C:O: the caption holds the second render and the ratio of their tests;
 - the stop's selection and run are met (no note says otherwise).
 Exits 1 on any stop that breaks a rule.
 
@@ -55,6 +56,8 @@ def check(stop, roles, count, caption, key, notes):
         problems.append("frontier asked for, but the key has no queue")
     if "misses" in overlays and "misses marked at path" not in key:
         problems.append("misses asked for, but the key names no path")
+    if s.get("compare") and not ("\nright: " in caption and "x the left's" in caption):
+        problems.append(f"compare {s['compare']} asked for, but the caption has no second render: {caption!r}")
     if "select:" in notes or "no such miss" in notes:
         problems.append("the stop's selection or run was not met: " + notes)
     return problems
