@@ -124,9 +124,12 @@
   function applyStop() {
     const s = new Map(stop.settings);
     $('stop').hidden = false;
-    $('stop-title').textContent = stop.title + '.';
     $('stop-caption').textContent = stop.caption;
     $('as-written').hidden = false;
+    const k = +(params.get('stop') || 1);
+    $('prev-stop').hidden = k <= 1;
+    $('next-stop').hidden = k >= stop.stops;
+    $('stop-title').textContent = k + '/' + stop.stops + '  ' + stop.title + '.';
     const full = new URLSearchParams({ tour: params.get('tour'), stop: params.get('stop') || '1' });
     $('full').href = '?' + full.toString();
     const scene = s.get('scene') || 'cube:4';
@@ -494,6 +497,14 @@
     if (params.has(key)) $(key).value = params.get(key);
   $('open').onclick = () => open();
   $('as-written').onclick = () => { if (stop) applyStop(); };
+  // Another stop: the same page at it (the render starts afresh, as the Qt GUI's does)
+  const goToStop = (step) => {
+    const next = new URLSearchParams(location.search);
+    next.set('stop', String(+(params.get('stop') || 1) + step));
+    location.search = next.toString();
+  };
+  $('prev-stop').onclick = () => goToStop(-1);
+  $('next-stop').onclick = () => goToStop(1);
   for (const id of ['scene', 'width', 'height', 'cache', 'order', 'accel', 'compare']) $(id).onchange = () => open();
   $('step-ray').onclick = () => worker.postMessage({ type: 'ray' });
   $('step-pixel').onclick = () => worker.postMessage({ type: 'pixel' });
