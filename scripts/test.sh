@@ -4,9 +4,10 @@
 # suites again under AddressSanitizer and UBSan (preset asan), the threaded render tests
 # under ThreadSanitizer (preset tsan), and a bounded fuzz run (RAYCACHE_FUZZ_SECONDS,
 # default 60; scripts/fuzz.sh runs longer). Prints how long each stage took.
-# With Emscripten and Chromium (installed here), the default build also builds the web edition
-# and ctest compares its images in headless Chromium with native ones; then the web edition's
-# speed against native is printed.
+# With Emscripten (installed here), the default build also builds the web edition, once,
+# before the docs, whose algorithm pages embed it as live figures; with Chromium, ctest
+# compares its images in headless Chromium with native ones and checks the overlays it draws
+# at every tour stop; then the web edition's speed against native is printed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --with-web --with-browser

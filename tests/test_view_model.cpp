@@ -3,10 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <memory>
+#include <string>
 
 #include "scene/builtin_scenes.h"
 #include "view/miss_cause.h"
+#include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 #include "view/path_index.h"
 #include "view/session_state.h"
@@ -17,10 +20,11 @@ int count(const std::vector<rc::OverlayShape>& shapes, rc::ShapeRole role) {
     return int(std::count_if(shapes.begin(), shapes.end(), [&](const rc::OverlayShape& s) { return s.role == role; }));
 }
 
-rc::SessionState session(const char* scene, rc::CacheKind cache, int size) {
+rc::SessionState session(const char* scene, rc::CacheKind cache, int size,
+                         rc::OrderKind order = rc::OrderKind::Scanline) {
     rc::RenderOptions o;
     o.cache = cache;
-    o.order = rc::OrderKind::Scanline;
+    o.order = order;
     o.width = o.height = size;
     return rc::SessionState({std::make_shared<const rc::Scene>(rc::loadScene(scene)), o});
 }
@@ -126,4 +130,62 @@ TEST_CASE("The path index gives every pixel's event at a path, read in parts as 
     u = parts.update(s.recorder(), s.serial(), 1);
     REQUIRE(u.rebuilt);
     agrees(parts, 1);
+}
+
+TEST_CASE("The miss markers at a path mark exactly the pixels whose ray there missed, by reason", "[view]") {
+    rc::SessionState s = session("cube:3", rc::CacheKind::Blocker, 48);
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    const std::vector<std::uint8_t> eye = rc::missLayer(s, 0);
+    REQUIRE(eye.size() == std::size_t(48 * 48));
+    // Counted from the event log (one eye ray a pixel, committed once), not the pixel chains
+    std::size_t misses = 0, marked = 0;
+    for (std::size_t i = 0; i < s.recorder().events().size(); ++i) {
+        const rc::EventRecord& r = s.recorder().events()[i];
+        if (r.node != 0 || r.deferred() || r.rayDecision() != rc::Decision::Miss) continue;
+        ++misses;
+        REQUIRE(eye[std::size_t(r.pixel)] == r.reason);
+    }
+    for (std::uint8_t m : eye) marked += m != 0;
+    REQUIRE(misses > 0);
+    REQUIRE(marked == misses);
+}
+
+TEST_CASE("The fill's region layer marks the region being filled, and nothing without a fill", "[view]") {
+    rc::SessionState bfs = session("cube:3", rc::CacheKind::Blocker, 48, rc::OrderKind::BreadthFirst);
+    REQUIRE(bfs.runUntil(rc::RunGoal::ToStep, 800));
+    const std::vector<std::uint8_t> marks = rc::regionLayer(bfs);
+    REQUIRE(std::count(marks.begin(), marks.end(), std::uint8_t(rc::RegionMark::Current)) > 0);
+    rc::SessionState scan = session("cube:3", rc::CacheKind::Blocker, 48);
+    REQUIRE(scan.runUntil(rc::RunGoal::ToStep, 800));
+    const std::vector<std::uint8_t> none = rc::regionLayer(scan);
+    REQUIRE(std::count(none.begin(), none.end(), std::uint8_t(0)) == 48 * 48);
+}
+
+TEST_CASE("A ray chosen by pixel and path, the caption of the ray in focus, and the showcase ray", "[view]") {
+    rc::SessionState s = session("trio", rc::CacheKind::Blocker, 64);
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    // The showcase: a reflection ray that hit an object, with blockers listed for its pair
+    const int shown = rc::showcaseEvent(s);
+    REQUIRE(shown >= 0);
+    const rc::EventRecord& r = s.recorder().events()[std::size_t(shown)];
+    REQUIRE(r.rayKind() == rc::RayKind::Reflection);
+    REQUIRE(r.hit >= 0);
+    // The same ray found again by its pixel and path (spaces and case aside)
+    std::string why;
+    const std::string path = s.session().cacheTree().label(r.node);
+    std::string shouted = path;
+    for (char& c : shouted) c = char(std::toupper(static_cast<unsigned char>(c)));
+    REQUIRE(rc::eventAtPath(s, r.pixel, shouted, why) == shown);
+    REQUIRE(why.empty());
+    REQUIRE(rc::eventAtPath(s, r.pixel, "eye/nowhere", why) == -1);
+    REQUIRE(why.find("its rays: eye") != std::string::npos);
+    // The caption: the render, then the ray in focus, selected
+    rc::Selection sel;
+    sel.event = shown;
+    const std::vector<std::string> lines = rc::focusCaption(s, sel);
+    REQUIRE(lines.size() == 2);
+    REQUIRE(lines[0] == "trio  blocker/scanline  64x64  step " + std::to_string(s.session().steps()));
+    REQUIRE(lines[1].rfind("selected: pixel (" + std::to_string(r.pixel % 64) + "," + std::to_string(r.pixel / 64) +
+                               ")  " + path + "  hit #" + std::to_string(r.hit),
+                           0) == 0);
 }

@@ -31,6 +31,7 @@
 #include "frame_log.h"
 #include "heatmap_builder.h"
 #include "image_view.h"
+#include "view/overlay_layers.h"
 #include "labels.h"
 #include "objects_panel.h"
 #include "ray_tree_panel.h"
@@ -665,29 +666,8 @@ void MainWindow::setAccel(rc::AccelKind k) {
 int MainWindow::focusShowcase() {
     const rc::SessionState* s = controller_.state();
     if (!s) return -1;
-    const rc::BlockerLists* lists = s->session().strategy().blockerLists();
-    const auto& events = s->recorder().events();
-    // The newest committed reflection ray that hit an object with potential blockers in
-    // the hull between the two (the paper's Figure 2 on screen); else such an eye ray;
-    // failing that, the newest hit
-    int best = -1;
-    for (const bool reflected : {true, false}) {
-        for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i) {
-            const rc::EventRecord& r = events[std::size_t(i)];
-            if (r.deferred() || r.hit < 0) continue;
-            if (reflected != (r.rayKind() == rc::RayKind::Reflection) || (!reflected && r.node != 0)) continue;
-            if (!lists) {
-                best = i;
-                break;
-            }
-            const int origin = r.origin >= 0 ? r.origin : lists->eyeSite();
-            const std::vector<int>* l = lists->find(origin, r.hit);
-            if (l && !l->empty()) best = i;
-        }
-        if (best >= 0) break;
-    }
-    for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i)
-        if (!events[std::size_t(i)].deferred() && events[std::size_t(i)].hit >= 0) best = i;
+    // The paper's Figure 2 on screen, or the newest hit (rc::showcaseEvent)
+    const int best = rc::showcaseEvent(*s);
     if (best >= 0) selectEvent(best);
     return best;
 }
@@ -704,20 +684,10 @@ bool MainWindow::selectRay(int x, int y, const QString& path, QString& error) {
     }
     selectPixel(x, y);
     if (path.isEmpty()) return true;
-    // Paths are compared without spaces and case: "eye/reflection/shadow1" names "shadow 1"
-    auto norm = [](QString t) { return t.remove(' ').toLower(); };
-    const rc::CacheTree& tree = s->session().cacheTree();
-    QStringList have;
-    int found = -1;
-    for (int i : s->recorder().eventsOf(y * s->width() + x)) {
-        const rc::EventRecord& r = s->recorder().events()[std::size_t(i)];
-        const QString label = QString::fromStdString(tree.label(r.node));
-        if (!have.contains(label)) have << label;
-        if (norm(label) == norm(path) && (found < 0 || !r.deferred())) found = i;
-    }
+    std::string why;
+    const int found = rc::eventAtPath(*s, y * s->width() + x, path.toStdString(), why);
     if (found < 0) {
-        error = QString("pixel (%1,%2) has no ray at path '%3'; its rays: %4")
-                    .arg(x).arg(y).arg(path).arg(have.isEmpty() ? QString("none yet") : have.join(", "));
+        error = QString::fromStdString(why);
         return false;
     }
     return selectEvent(found);

@@ -1,6 +1,6 @@
 #include "overlay_painter.h"
 
-#include "view/miss_cause.h"
+#include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 
 #include <algorithm>
@@ -268,28 +268,14 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
         const rc::PathIndex::Update u = regionsIndex_.update(rec, s.serial(), f.path, eventBudget_);
         pending_ = pending_ || !u.complete;
         if (u.rebuilt || !u.pixels.empty() || regionsCurrent_ != f.region || regions_.size() != QSize(w, h)) {
-            // One pass over the index, a row and the row below at a time
-            auto regionAt = [&](int x, int y) {
-                if (x < 0 || y < 0 || x >= w || y >= h) return -1;
-                const rc::PathIndex::Entry& e = regionsIndex_.at(y * w + x);
-                return e.event < 0 ? -1 : int(e.region);
-            };
+            // The marks of the core (rc::regionLayer), in this viewer's colours
+            const std::vector<std::uint8_t> marks = rc::regionLayer(regionsIndex_, w, h, f.region);
+            const QRgb colours[3] = {0, qPremultiply(withAlpha(palette::kRegion, 120).rgba()),
+                                     qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba())};
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
-            regions_.fill(Qt::transparent);
-            const QRgb current = qPremultiply(withAlpha(palette::kRegion, 120).rgba());
-            const QRgb edge = qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba());
-            std::vector<int> row(std::size_t(w) + 1, -1), below(std::size_t(w) + 1, -1);
-            for (int x = 0; x < w; ++x) row[std::size_t(x)] = regionAt(x, 0);
             for (int y = 0; y < h; ++y) {
-                for (int x = 0; x < w; ++x) below[std::size_t(x)] = regionAt(x, y + 1);
                 auto* line = reinterpret_cast<QRgb*>(regions_.scanLine(y));
-                for (int x = 0; x < w; ++x) {
-                    const int region = row[std::size_t(x)];
-                    if (region < 0) continue;
-                    if (region == f.region) line[x] = current;
-                    else if (row[std::size_t(x) + 1] != region || below[std::size_t(x)] != region) line[x] = edge;
-                }
-                row.swap(below);
+                for (int x = 0; x < w; ++x) line[x] = colours[marks[std::size_t(y) * std::size_t(w) + std::size_t(x)]];
             }
             regionsCurrent_ = f.region;
         }
@@ -324,11 +310,10 @@ void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double 
     const int path = focus ? focus->node : 0;
     const rc::PathIndex::Update u = missesIndex_.update(rec, s.serial(), path, eventBudget_);
     pending_ = pending_ || !u.complete;
-    // A pixel's colour: its miss's reason at the path, transparent for anything else
+    // A pixel's colour: its miss's reason at the path (rc::missMark), transparent for none
     auto colour = [&](int px) {
-        const rc::PathIndex::Entry& e = missesIndex_.at(px);
-        if (e.event < 0 || rc::Decision(e.decision) != rc::Decision::Miss) return QRgb(0);
-        return qPremultiply(palette::missReason(rc::MissReason(e.reason)).rgba());
+        const std::uint8_t reason = rc::missMark(missesIndex_, px);
+        return reason == 0 ? QRgb(0) : qPremultiply(palette::missReason(rc::MissReason(reason)).rgba());
     };
     if (u.rebuilt || misses_.size() != QSize(w, h)) {
         misses_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
@@ -352,28 +337,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     QStringList caption;
     std::vector<std::pair<QColor, QString>> keys;
     const rc::RenderSession& session = s.session();
-    caption << QString("%1  %2/%3  %4  step %5")
-                   .arg(QString::fromStdString(s.scene().name))
-                   .arg(QString::fromUtf8(rc::toString(session.strategy().kind()).data()))
-                   .arg(QString::fromUtf8(rc::toString(session.order().kind()).data()))
-                   .arg(QString("%1x%2").arg(s.width()).arg(s.height()))
-                   .arg(session.steps());
+    for (const std::string& line : rc::focusCaption(s, sel)) caption << QString::fromStdString(line);
     const auto focus = rc::RayFocus::of(s, sel);
-    if (focus) {
-        const rc::RayFocus& f = *focus;
-        QString d = QString::fromUtf8(rc::toString(f.decision).data());
-        if (f.reason != rc::MissReason::None)
-            d += QString(" (%1)").arg(QString::fromUtf8(rc::toString(f.reason).data()));
-        if (f.deferred) d = "deferred: " + d;
-        caption << QString("%1 pixel (%2,%3)  %4  hit %5  %6  %7 tests")
-                       .arg(f.selected ? "selected:" : "ray:")
-                       .arg(f.pixel % s.width()).arg(f.pixel / s.width())
-                       .arg(QString::fromStdString(session.cacheTree().label(f.node)))
-                       .arg(f.deferred ? QString("?") : f.hit >= 0 ? QString("#%1").arg(f.hit) : QString("nothing"))
-                       .arg(d).arg(f.tests);
-    } else if (sel.pixel >= 0) {
-        caption << QString("selected pixel (%1,%2): not traced yet").arg(sel.pixel % s.width()).arg(sel.pixel / s.width());
-    }
     if (o.hull || o.cylinder)
         keys.push_back({palette::kRay, focus && focus->selected ? "selected ray" : "ray being traced"});
     if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
@@ -440,18 +405,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     }
     // A miss in focus: what caused it, in words and in red
     if (focus && (o.hull || o.cylinder)) {
-        const rc::MissCause c = rc::missCauseOf(s, *focus);
-        const QString was = c.cachedObject >= 0 ? QString("#%1").arg(c.cachedObject) : QString("nothing");
-        if (c.reason == rc::MissReason::TargetMissed)
-            keys.push_back({palette::kMissCause, QString("miss: the cached target %1 is not hit").arg(was)});
-        else if (c.reason == rc::MissReason::BlockerHit)
-            keys.push_back({palette::kMissCause, QString("miss: blocker #%1 is hit before the cached %2").arg(c.blocker).arg(was)});
-        else if (c.reason == rc::MissReason::LeftCylinder && c.cylinder.radius > 0.0)
-            keys.push_back({palette::kMissCause, QString("miss: the ray leaves the cached cylinder (r %1, cached %2)")
-                                                     .arg(c.cylinder.radius, 0, 'g', 3).arg(was)});
-        else if (c.valid())
-            keys.push_back({palette::kMissCause, QString("miss (%1); the entry held %2")
-                                                     .arg(QString::fromUtf8(rc::toString(c.reason).data()), was)});
+        const std::string cause = rc::missCauseText(s, *focus);
+        if (!cause.empty()) keys.push_back({palette::kMissCause, QString::fromStdString(cause)});
     }
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});

@@ -1,21 +1,31 @@
 // The web edition's binding layer: what the viewer page (web/index.html, its worker
-// web/render_worker.js) asks of the core, through embind. A render is a RenderSession
-// stepped ray by ray, as in the Qt GUI; nothing here computes an image or an answer.
+// web/render_worker.js) asks of the core, through embind. A render is a SessionState
+// stepped ray by ray, as in the Qt GUI, and its overlays are the core's (rc::focusShapes,
+// rc::missLayer, rc::regionLayer, rc::focusCaption): nothing here computes an image, an
+// answer or an overlay's geometry, it only hands them over.
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
+#include <nlohmann/json.hpp>
 
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
+#include "view/image_projector.h"
+#include "view/overlay_layers.h"
+#include "view/overlay_shapes.h"
+#include "view/session_state.h"
+#include "view/tour.h"
 
 namespace {
 
 using namespace rc;
+using emscripten::val;
 
 // Stores a dropped NFF file in the page's in-memory file system, so that loadScene()
 // reads it as it reads any file (errors name it: dropped.nff:line:column)
@@ -32,24 +42,6 @@ std::string builtinSceneList() {
     return out;
 }
 
-// The last ray traced; for each pixel the intersection tests made (the heatmap) and the
-// reason of its last committed cache miss (the miss markers; 0: none)
-class StepRecorder : public TraceSink {
-public:
-    explicit StepRecorder(int pixels) : tests(std::size_t(pixels), 0), missReason(std::size_t(pixels), 0) {}
-    void onEvent(const TraceEvent& e) override {
-        last = e;
-        any = true;
-        tests[std::size_t(e.task.pixel)] += std::uint32_t(e.tests);
-        if (!e.deferred && e.lookup.decision == Decision::Miss)
-            missReason[std::size_t(e.task.pixel)] = std::uint8_t(e.lookup.reason);
-    }
-    TraceEvent last;
-    bool any = false;
-    std::vector<std::uint32_t> tests;
-    std::vector<std::uint8_t> missReason;
-};
-
 // The names of the miss reasons, by their number in missReasons(), one a line
 std::string missReasonNames() {
     std::string out;
@@ -57,14 +49,43 @@ std::string missReasonNames() {
     return out;
 }
 
+// A stop of a tour that travels with the page (under /tours), read by the core's parser,
+// as JSON: {title, caption, page, stops, settings: [[key, value], ...]}; {error} if it
+// cannot be read
+std::string tourStop(const std::string& name, int stop) {
+    try {
+        const Tour tour = loadTour("/tours/" + name + ".json");
+        if (stop < 1 || stop > int(tour.stops.size()))
+            return nlohmann::json{{"error", tour.file + ": no stop " + std::to_string(stop) + " (it has " +
+                                                std::to_string(tour.stops.size()) + ")"}}.dump();
+        const TourStop& st = tour.stops[std::size_t(stop - 1)];
+        nlohmann::json settings = nlohmann::json::array();
+        for (const TourSetting& s : st.settings) settings.push_back({s.key, s.value});
+        return nlohmann::json{{"title", st.title}, {"caption", st.caption}, {"page", st.page},
+                              {"tour", tour.title}, {"stops", tour.stops.size()}, {"settings", settings}}.dump();
+    } catch (const std::exception& e) {
+        return nlohmann::json{{"error", e.what()}}.dump();
+    }
+}
+
+val points(const Outline& outline) {
+    val out = val::array();
+    for (const ImagePoint& p : outline) {
+        out.call<void>("push", p.x);
+        out.call<void>("push", p.y);
+    }
+    return out;
+}
+
 class WebRender {
 public:
     WebRender(const std::string& scene, int width, int height, const std::string& cache, const std::string& order,
               const std::string& accel) {
-        auto s = std::make_shared<const Scene>(loadScene(scene, 1986));
-        RenderOptions o;
-        o.width = width > 0 ? width : s->camera.width;
-        o.height = height > 0 ? height : s->camera.height;
+        SessionConfig config;
+        config.scene = std::make_shared<const Scene>(loadScene(scene, 1986));
+        RenderOptions& o = config.options;
+        o.width = width > 0 ? width : config.scene->camera.width;
+        o.height = height > 0 ? height : config.scene->camera.height;
         const auto c = parseCacheKind(cache);
         const auto r = parseOrderKind(order);
         const auto a = parseAccelKind(accel);
@@ -72,90 +93,183 @@ public:
         o.cache = *c;
         o.order = *r;
         o.accel = *a;
-        session_ = std::make_unique<RenderSession>(s, o);
-        recorder_ = std::make_unique<StepRecorder>(o.width * o.height);
-        session_->addSink(recorder_.get());
+        // The page has no Step back: one checkpoint, at step 0
+        config.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
+        state_ = std::make_unique<SessionState>(std::move(config));
+        projector_ = std::make_unique<ImageProjector>(state_->scene().camera, state_->camera());
     }
 
-    int width() const { return session_->width(); }
-    int height() const { return session_->height(); }
-    bool done() const { return session_->done(); }
-    double progress() const { return session_->progress(); }
-    double steps() const { return double(session_->steps()); }
+    int width() const { return state_->width(); }
+    int height() const { return state_->height(); }
+    bool done() const { return state_->session().done(); }
+    double progress() const { return state_->session().progress(); }
+    double steps() const { return double(state_->session().steps()); }
 
-    /// Traces up to `n` rays; returns false when the image is complete.
+    /// Traces up to `n` rays; returns false when the image is complete. The ray being
+    /// traced comes back in focus.
     bool run(int n) {
+        selection_ = {};
         for (int i = 0; i < n; ++i)
-            if (!session_->step()) return false;
-        return !session_->done();
+            if (!state_->step()) return false;
+        return !done();
     }
-    /// Traces rays until one of another pixel than the last traced has been traced, or
-    /// until a committed cache miss ("miss"), at most `limit` rays. True when it got there.
-    bool runUntil(const std::string& goal, int limit) {
-        const int pixel = recorder_->any ? recorder_->last.task.pixel : -1;
-        for (int i = 0; i < limit; ++i) {
-            if (!session_->step()) return false;
-            const TraceEvent& e = recorder_->last;
-            if (goal == "pixel" && e.task.pixel != pixel) return true;
-            if (goal == "miss" && !e.deferred && e.lookup.decision == Decision::Miss) return true;
-        }
-        return false;
+    /// Traces rays until step `target` (a tour stop's "steps").
+    void runToStep(double target) {
+        selection_ = {};
+        state_->runUntil(RunGoal::ToStep, std::int64_t(target));
     }
+    /// Traces rays until one of another pixel ("pixel"), or until a committed cache miss
+    /// ("miss", of reason `reason` when it names one), which comes in focus. True when
+    /// it got there before the end.
+    bool runUntil(const std::string& goal, const std::string& reason) {
+        selection_ = {};
+        MissReason filter = MissReason::None;
+        for (int r = 1; r < kMissReasons; ++r)
+            if (reason == toString(MissReason(r))) filter = MissReason(r);
+        state_->setMissFilter(filter);
+        const bool met = state_->runUntil(goal == "miss" ? RunGoal::NextMiss : RunGoal::NextPixel, 0);
+        if (state_->stopEvent() >= 0) selection_.event = state_->stopEvent();
+        return met && !(goal == "miss" && state_->stopEvent() < 0);
+    }
+    /// Puts pixel (x, y)'s ray at `path` in focus (its eye ray when `path` is empty);
+    /// returns why not, or "".
+    std::string select(int x, int y, const std::string& path) {
+        if (x < 0 || y < 0 || x >= width() || y >= height())
+            return "pixel (" + std::to_string(x) + "," + std::to_string(y) + ") is outside the " +
+                   std::to_string(width()) + "x" + std::to_string(height()) + " image";
+        selection_ = {};
+        selection_.pixel = y * width() + x;
+        if (path.empty()) return "";
+        std::string why;
+        selection_.event = eventAtPath(*state_, selection_.pixel, path, why);
+        return why;
+    }
+    /// Puts a ray worth showing in focus (rc::showcaseEvent), as the Qt GUI does for a
+    /// stop that shows the scene view without choosing a ray. False when none is traced.
+    bool showcase() {
+        selection_ = {};
+        selection_.event = showcaseEvent(*state_);
+        return selection_.event >= 0;
+    }
+    void clearSelection() { selection_ = {}; }
+    int selectedPixel() const { return selection_.pixel; }
 
     /// The 8-bit RGB image, rows top to bottom (a view into memory the next call may move).
-    emscripten::val image() {
-        rgb_ = session_->image().rgb8();
-        return emscripten::val(emscripten::typed_memory_view(rgb_.size(), rgb_.data()));
+    val image() {
+        rgb_ = state_->session().image().rgb8();
+        return val(emscripten::typed_memory_view(rgb_.size(), rgb_.data()));
     }
     /// Intersection tests made for each pixel so far.
-    emscripten::val heat() const {
-        return emscripten::val(emscripten::typed_memory_view(recorder_->tests.size(), recorder_->tests.data()));
+    val heat() {
+        const TraceRecorder& rec = state_->recorder();
+        heat_.resize(std::size_t(width()) * std::size_t(height()));
+        for (std::size_t i = 0; i < heat_.size(); ++i) heat_[i] = std::uint32_t(rec.testsAt(int(i)));
+        return val(emscripten::typed_memory_view(heat_.size(), heat_.data()));
+    }
+    /// The miss markers: each pixel's miss reason at the path of the ray in focus
+    /// (rc::missLayer; 0: none; see missReasonNames).
+    val missReasons() {
+        const auto f = RayFocus::of(*state_, selection_);
+        misses_ = missLayer(*state_, f ? f->node : 0);
+        return val(emscripten::typed_memory_view(misses_.size(), misses_.data()));
+    }
+    /// The breadth-first regions (rc::regionLayer: 1 the region being filled, 2 the edge
+    /// of a finished one).
+    val regions() {
+        regions_ = regionLayer(*state_);
+        return val(emscripten::typed_memory_view(regions_.size(), regions_.data()));
+    }
+    /// The fill's queued pixels and deferred seeds, its path and region.
+    val frontier() const {
+        const FrontierView f = state_->session().order().frontier();
+        val out = val::object();
+        val queued = val::array(), deferred = val::array();
+        for (int px : f.queued) queued.call<void>("push", px);
+        for (int px : f.deferred) deferred.call<void>("push", px);
+        out.set("queued", queued);
+        out.set("deferred", deferred);
+        out.set("path", f.path >= 0 ? state_->session().cacheTree().label(f.path) : std::string());
+        out.set("region", double(f.region));
+        return out;
     }
 
-    /// The reason of each pixel's last committed cache miss (0: none; see missReasonNames).
-    emscripten::val missReasons() const {
-        return emscripten::val(
-            emscripten::typed_memory_view(recorder_->missReason.size(), recorder_->missReason.data()));
+    /// The overlays of the ray in focus (rc::focusShapes), clipped to the rectangle
+    /// (image coordinates) the page shows: [{role, label, outline: [x, y, ...], covers,
+    /// flat, segment: [ax, ay, bx, by], point: [x, y]}], in drawing order.
+    val shapes(bool cylinder, bool hull, double left, double top, double right, double bottom) {
+        val out = val::array();
+        const auto f = RayFocus::of(*state_, selection_);
+        if (!f) return out;
+        projector_->setClip({left, top, right, bottom});
+        for (const OverlayShape& s : focusShapes(*state_, *f, *projector_, {cylinder, hull})) {
+            val v = val::object();
+            v.set("role", std::string(toString(s.role)));
+            v.set("label", s.label);
+            v.set("covers", s.covers);
+            v.set("flat", s.flat);
+            v.set("outline", points(s.outline));
+            if (s.segment) v.set("segment", points({s.segment->a, s.segment->b}));
+            if (s.point) v.set("point", points({*s.point}));
+            out.call<void>("push", v);
+        }
+        return out;
+    }
+
+    /// What the key says besides colours: the hull's listed and drawn blockers, the miss
+    /// cause of the ray in focus in words, its pixel and path, the miss counts by reason.
+    val legend() const {
+        val out = val::object();
+        const auto f = RayFocus::of(*state_, selection_);
+        out.set("blockerLists", state_->session().strategy().blockerLists() != nullptr);
+        if (f) {
+            const FocusHull h = hullOf(*state_, *f);
+            out.set("blockersShown", double(h.blockers.size()));
+            out.set("blockersListed", double(h.listed));
+            out.set("cause", missCauseText(*state_, *f));
+            out.set("pixel", f->pixel);
+            out.set("path", state_->session().cacheTree().label(f->node));
+            out.set("selected", f->selected);
+        }
+        val misses = val::array();
+        for (std::uint64_t n : state_->session().counters().missReasons) misses.call<void>("push", double(n));
+        out.set("misses", misses);
+        return out;
+    }
+
+    /// The caption of the render and of the ray in focus (rc::focusCaption), a line each.
+    std::string caption() const {
+        std::string out;
+        for (const std::string& line : focusCaption(*state_, selection_)) out += line + "\n";
+        return out;
+    }
+    /// The pixel of the ray being traced (-1: none yet).
+    int focusPixel() const {
+        const auto& e = state_->recorder().lastEvent();
+        return e ? e->task.pixel : -1;
     }
 
     /// The counters, as JSON.
     std::string statistics() const {
-        const Counters& n = session_->counters();
-        char buf[512];
-        std::snprintf(buf, sizeof buf,
-                      "{\"rays\":%llu,\"primary\":%llu,\"shadow\":%llu,\"reflection\":%llu,\"refraction\":%llu,"
-                      "\"tests\":%llu,\"searches\":%llu,\"hits\":%llu,\"misses\":%llu,\"steps\":%lld}",
-                      (unsigned long long)n.totalRays(), (unsigned long long)n.rays[int(RayKind::Primary)],
-                      (unsigned long long)n.rays[int(RayKind::Shadow)],
-                      (unsigned long long)n.rays[int(RayKind::Reflection)],
-                      (unsigned long long)n.rays[int(RayKind::Refraction)], (unsigned long long)n.intersectionTests,
-                      (unsigned long long)n.completeSearches, (unsigned long long)n.hits,
-                      (unsigned long long)n.misses, (long long)session_->steps());
-        return buf;
+        const Counters& n = state_->session().counters();
+        return nlohmann::json{{"rays", n.totalRays()},
+                              {"primary", n.rays[int(RayKind::Primary)]},
+                              {"shadow", n.rays[int(RayKind::Shadow)]},
+                              {"reflection", n.rays[int(RayKind::Reflection)]},
+                              {"refraction", n.rays[int(RayKind::Refraction)]},
+                              {"tests", n.intersectionTests},
+                              {"searches", n.completeSearches},
+                              {"hits", n.hits},
+                              {"misses", n.misses},
+                              {"steps", state_->session().steps()}}
+            .dump();
     }
-
-    /// The ray in focus (the last traced), in words; its pixel is focusPixel().
-    std::string caption() const {
-        if (!recorder_->any) return "no ray traced yet";
-        const TraceEvent& e = recorder_->last;
-        const int w = session_->width();
-        std::string c = "ray " + std::to_string(e.step + 1) + ": pixel (" + std::to_string(e.task.pixel % w) + ", " +
-                        std::to_string(e.task.pixel / w) + "), " + std::string(toString(e.task.query.kind)) +
-                        " ray, depth " + std::to_string(e.task.depth) + ", ";
-        if (e.deferred) c += "deferred, ";
-        c += std::string(toString(e.lookup.decision));
-        if (e.lookup.reason != MissReason::None) c += " (" + std::string(toString(e.lookup.reason)) + ")";
-        c += e.lookup.object < 0 ? ", hits nothing" : ", hits object #" + std::to_string(e.lookup.object);
-        c += ", " + std::to_string(e.tests) + " intersection tests";
-        if (e.lookup.searched) c += ", complete search";
-        return c;
-    }
-    int focusPixel() const { return recorder_->any ? recorder_->last.task.pixel : -1; }
 
 private:
-    std::unique_ptr<RenderSession> session_;
-    std::unique_ptr<StepRecorder> recorder_;
-    std::vector<std::uint8_t> rgb_;
+    std::unique_ptr<SessionState> state_;
+    std::unique_ptr<ImageProjector> projector_;
+    Selection selection_;
+    std::vector<std::uint8_t> rgb_, misses_, regions_;
+    std::vector<std::uint32_t> heat_;
 };
 
 // Scene errors reach the page as text (file:line:column: message), not as an abort
@@ -176,6 +290,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
     function("builtinSceneList", &builtinSceneList);
     function("checkScene", &checkScene);
     function("missReasonNames", &missReasonNames);
+    function("tourStop", &tourStop);
     class_<WebRender>("Render")
         .constructor<std::string, int, int, std::string, std::string, std::string>()
         .function("width", &WebRender::width)
@@ -184,10 +299,19 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("progress", &WebRender::progress)
         .function("steps", &WebRender::steps)
         .function("run", &WebRender::run)
+        .function("runToStep", &WebRender::runToStep)
         .function("runUntil", &WebRender::runUntil)
+        .function("select", &WebRender::select)
+        .function("showcase", &WebRender::showcase)
+        .function("clearSelection", &WebRender::clearSelection)
+        .function("selectedPixel", &WebRender::selectedPixel)
         .function("image", &WebRender::image)
         .function("heat", &WebRender::heat)
         .function("missReasons", &WebRender::missReasons)
+        .function("regions", &WebRender::regions)
+        .function("frontier", &WebRender::frontier)
+        .function("shapes", &WebRender::shapes)
+        .function("legend", &WebRender::legend)
         .function("statistics", &WebRender::statistics)
         .function("caption", &WebRender::caption)
         .function("focusPixel", &WebRender::focusPixel);

@@ -1,14 +1,50 @@
 // The viewer page: controls, the canvas, the statistics. The render itself runs in a
-// worker (render_worker.js) that owns the web edition's Render.
+// worker (render_worker.js) that owns the web edition's Render; every overlay comes from
+// the core through it (the shapes of the ray in focus, the miss markers, the regions and
+// frontier of the fill, the caption): this file only styles them, by role.
 (function () {
   const $ = (id) => document.getElementById(id);
   const params = new URLSearchParams(location.search);
   const canvas = $('canvas');
   const context = canvas.getContext('2d');
+  const layer = document.createElement('canvas');  // the picture at image size
+  const layerContext = layer.getContext('2d');
   let last = null;        // the last frame the worker sent
   let dropped = null;     // {name, text} of a dropped NFF file
   let worker = null;
   let generation = 0;     // renders opened so far: a hash written late for an earlier one is dropped
+  let pendingRun = null;  // ?run=end: run to the end once the render is open
+  let stop = null;        // the tour stop shown (?tour=NAME&stop=K), as the core read it
+  let viewRect = null;    // the image rectangle shown [x0, y0, x1, y1] (null: the whole image)
+  let zoomAbout = 0;      // a stop's zoom, about the pixel in focus, once the render is open
+  if (params.get('embed') === '1') document.body.classList.add('embed');
+
+  // The Qt GUI's colours (ui/palette.h), for the same roles
+  const kRay = [255, 235, 59], kCylinder = [0, 229, 255], kHull = [224, 64, 251], kTarget = [0, 230, 118],
+        kBlocker = [255, 145, 0], kOrigin = [255, 255, 255], kQueued = [118, 255, 3], kDeferred = [255, 23, 68],
+        kRegion = [255, 255, 255], kRegionEdge = [20, 20, 24], kSelection = [0, 176, 255], kMissCause = [255, 64, 64];
+  // Miss reasons by rc::MissReason's number (ui/palette.cpp)
+  const kMissColours = [null, [153, 153, 153], [240, 228, 66], [0, 114, 178], [213, 94, 0], [230, 159, 0],
+                        [86, 180, 233], [204, 121, 167]];
+  // How each role of rc::ShapeRole is drawn (ui/overlay_painter.cpp's paintShape): colour,
+  // line width, dashed, fill alpha (0-255); a star for a point
+  const kRoleStyles = {
+    Cylinder: { colour: kCylinder, width: 2.0, dash: true, fill: 35 },
+    CachedCylinder: { colour: kCylinder, width: 2.5, dash: false, fill: 60 },
+    CylinderAxis: { colour: kCylinder, width: 1.5, dash: true },
+    EmptyCone: { colour: kHull, width: 2.5, dash: true, fill: 30 },
+    EmptyConeAxis: { colour: kHull, star: 5.7, arms: 2 },
+    Hull: { colour: kHull, width: 2.5, dash: false, fill: 45 },
+    Origin: { colour: kOrigin, width: 1.5, dash: true, fill: 0 },
+    Target: { colour: kTarget, width: 3.0, dash: false, fill: 40 },
+    TargetPoint: { colour: kTarget, star: 8.0, arms: 4 },
+    Blocker: { colour: kBlocker, width: 3.0, dash: false, fill: 80 },
+    CylinderLeft: { colour: kMissCause, width: 2.5, dash: true, fill: 40 },
+    MissedTarget: { colour: kMissCause, width: 3.5, dash: false, fill: 50 },
+    BlockerHit: { colour: kBlocker, width: 4.0, dash: false, fill: 120 },
+    Ray: { colour: kRay, width: 2.5, dash: false },
+  };
+  const rgba = (c, a) => 'rgba(' + c[0] + ',' + c[1] + ',' + c[2] + ',' + (a === undefined ? 1 : a / 255) + ')';
 
   // The worker, from a Blob: raycache.js's factory and renderWorkerMain, as source text
   function startWorker() {
@@ -28,40 +64,139 @@
   // Scene names: a built-in name (cube:5), an SPD scene of scenes/ (scenes/balls2.nff)
   function sceneSpec(name) { return name.startsWith('scenes/') ? '/' + name : name; }
 
-  function open() {
+  function overlayChoice() {
+    return { cylinder: $('ov-cylinder').checked, hull: $('ov-hull').checked, frontier: $('ov-frontier').checked,
+             misses: $('ov-misses').checked, clip: viewRect };
+  }
+
+  function open(stopRays) {
     const width = +$('width').value, height = +$('height').value;
     const m = { type: 'open', width, height, cache: $('cache').value, order: $('order').value,
-                accel: $('accel').value };
+                accel: $('accel').value, view: overlayChoice(), stop: stopRays || null, compare: null };
+    const [compareCache, compareOrder] = $('compare').value.split(':');
+    if (compareCache && compareOrder) m.compare = { cache: compareCache, order: compareOrder };
     if ($('scene').value === 'dropped' && dropped) { m.nff = dropped.text; m.name = dropped.name; }
     else m.scene = sceneSpec($('scene').value);
     ++generation;
     $('image-hash').textContent = '';
     $('timing').textContent = '';
     $('caption').className = '';
+    $('caption').textContent = 'tracing…';
+    if (!stopRays) { viewRect = null; zoomAbout = 0; }
     worker.postMessage(m);
   }
 
   function onMessage(m) {
     if (m.type === 'loaded') {
+      kMissNames = m.missReasons;
       fillScenes(m.scenes);
-      fillMissLegend(m.missReasons);
+      if (params.has('tour')) {
+        worker.postMessage({ type: 'tour', tour: params.get('tour'), stop: +(params.get('stop') || 1) });
+        return;
+      }
       open();
       if (params.get('run') === 'end') pendingRun = 'end';
+    } else if (m.type === 'tour') {
+      if (m.stop.error) { showError(m.stop.error); return; }
+      stop = m.stop;
+      applyStop();
     } else if (m.type === 'error') {
       showError(m.message);
     } else if (m.type === 'frame') {
       last = m;
+      if (m.opened && zoomAbout > 0) zoomView();
       draw();
-      showStatistics(m.statistics);
-      $('caption').textContent = m.caption;
+      showStatistics(m.statistics, m.compare && m.compare.statistics);
+      $('caption').textContent = captionOf(m);
+      canvas.classList.toggle('wide', !!m.compare);
+      showKey(m);
       $('play').textContent = m.running === 'play' ? 'Pause' : 'Play';
+      if (m.notes && m.notes.length) $('stop-notes').textContent = [stopNotes].concat(m.notes).filter(Boolean).join(' ');
       if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
       if (m.runMs !== undefined && m.runMs !== null)
         $('timing').textContent = 'ran to the end in ' + m.runMs.toFixed(1) + ' ms';
       if (m.done) writeHash(m.image);
     }
   }
-  let pendingRun = null;
+
+  // ---- A tour stop: its settings as the Qt GUI reads them (ui/gui_options.cpp) -------------
+  let stopNotes = '';
+  function applyStop() {
+    const s = new Map(stop.settings);
+    $('stop').hidden = false;
+    $('stop-caption').textContent = stop.caption;
+    $('as-written').hidden = false;
+    const k = +(params.get('stop') || 1);
+    $('prev-stop').hidden = k <= 1;
+    $('next-stop').hidden = k >= stop.stops;
+    $('stop-title').textContent = k + '/' + stop.stops + '  ' + stop.title + '.';
+    const full = new URLSearchParams({ tour: params.get('tour'), stop: params.get('stop') || '1' });
+    $('full').href = '?' + full.toString();
+    const scene = s.get('scene') || 'cube:4';
+    if (![...$('scene').options].some((o) => o.value === scene)) addSceneOption(scene, scene);
+    $('scene').value = scene;
+    $('width').value = s.get('width') || 0;
+    $('height').value = s.get('height') || 0;
+    $('cache').value = s.get('cache') || 'blocker';
+    $('order').value = s.get('order') || 'bfs';
+    $('accel').value = s.get('accel') || 'linear';
+    const overlays = (s.get('overlays') || '').split(',');
+    const has = (w) => overlays.includes(w) || overlays.includes('all');
+    $('ov-cylinder').checked = has('cylinder');
+    $('ov-hull').checked = has('cone') || has('hull') || has('blocker');
+    $('ov-frontier').checked = has('frontier');
+    $('ov-misses').checked = has('misses');
+    $('heatmap').checked = s.get('heatmap') === 'tests';
+    const compare = s.get('compare') || '';
+    if (compare && ![...$('compare').options].some((o) => o.value === compare)) {
+      const o = document.createElement('option');
+      o.value = o.textContent = compare;
+      $('compare').appendChild(o);
+    }
+    $('compare').value = compare;
+    // What the web viewer leaves to the Qt GUI, said rather than dropped
+    const left = [];
+    if (s.has('scene-view')) left.push('the scene view (' + (s.get('scene-view') || 'side') + ')');
+    if (s.has('panels')) left.push('the panels (' + s.get('panels') + ')');
+    if (s.has('heatmap') && s.get('heatmap') !== 'tests') left.push('the ' + s.get('heatmap') + ' heatmap');
+    for (const k of ['spp', 'light-radius', 'shadow-samples', 'gloss', 'gloss-samples', 'orbit'])
+      if (s.has(k)) left.push('--' + k);
+    if (overlays.includes('samples')) left.push('the sample rays');
+    stopNotes = left.length ? 'The Qt GUI (raycache-gui --tour tours/' + params.get('tour') + '.json --stop ' +
+      (params.get('stop') || 1) + ') also shows ' + left.join(', ') + '.' : '';
+    $('stop-notes').textContent = stopNotes;
+    viewRect = null;
+    zoomAbout = 0;
+    if (s.has('focus')) {
+      const v = s.get('focus').split(',').map(Number);
+      if (v.length === 4 && v[0] < v[2] && v[1] < v[3]) viewRect = v;
+    } else if (+s.get('zoom') > 1) {
+      zoomAbout = +s.get('zoom');
+    }
+    open({ steps: +(s.get('steps') || 0), run: s.get('run') || '', missReason: s.get('miss-reason') || '',
+           select: s.get('select') || '',
+           // The Qt GUI's rule: a scene view with no ray chosen shows a ray worth seeing
+           showcase: s.has('scene-view') && !s.has('select') && !s.has('run') });
+  }
+
+  // A stop's zoom: the image rectangle `zoomAbout` times smaller, about the pixel in focus
+  function zoomView() {
+    const m = last;
+    const pixel = m.legend.pixel !== undefined ? m.legend.pixel : m.focusPixel;
+    const cx = pixel >= 0 ? pixel % m.width + 0.5 : m.width / 2, cy = pixel >= 0 ? Math.floor(pixel / m.width) + 0.5 : m.height / 2;
+    const w = m.width / zoomAbout, h = m.height / zoomAbout;
+    viewRect = [cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2];
+    zoomAbout = 0;
+    worker.postMessage({ type: 'view', view: overlayChoice() });
+  }
+
+  function addSceneOption(value, text) {
+    const o = document.createElement('option');
+    o.value = value;
+    o.textContent = text;
+    $('scene').appendChild(o);
+    return o;
+  }
 
   // The built-in scenes with a size, and the SPD scenes that travel with the page
   function fillScenes(list) {
@@ -70,77 +205,283 @@
     const files = ['balls1', 'balls2', 'gears2', 'jacks2', 'lattice2', 'mount2', 'rings2', 'shells1', 'teapot2',
                    'tetra2', 'tree2'].map((s) => 'scenes/' + s + '.nff');
     const described = new Map(list.trim().split('\n').map((l) => l.split('\t')));
-    for (const n of names.concat(files)) {
-      const o = document.createElement('option');
-      o.value = o.textContent = n;
-      o.title = described.get(n.replace(/:\d+$/, ':N')) || '';
-      select.appendChild(o);
-    }
+    for (const n of names.concat(files)) addSceneOption(n, n).title = described.get(n.replace(/:\d+$/, ':N')) || '';
     const wanted = params.get('scene');
-    if (wanted && ![...select.options].some((o) => o.value === wanted)) {
-      const o = document.createElement('option');
-      o.value = o.textContent = wanted;
-      select.appendChild(o);
-    }
+    if (wanted && ![...select.options].some((o) => o.value === wanted)) addSceneOption(wanted, wanted);
     select.value = wanted || 'cube:4';
   }
 
-  function draw() {
-    const m = last;
-    if (!m) return;
-    if (canvas.width !== m.width || canvas.height !== m.height) { canvas.width = m.width; canvas.height = m.height; }
-    const out = context.createImageData(m.width, m.height);
-    const n = m.width * m.height;
+  // ---- Drawing ---------------------------------------------------------------------------
+  // The viridis-like ramp of the Qt GUI's heatmaps (ui/palette.cpp)
+  const kRamp = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+  function ramp(t) {
+    t = Math.min(1, Math.max(0, t)) * 4;
+    const i = Math.min(3, Math.floor(t)), f = t - i, a = kRamp[i], b = kRamp[i + 1];
+    return [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])];
+  }
+
+  // The picture at image size: the image or the heatmap (on the scale `most`, shared by
+  // two renders side by side), the regions of the fill, the misses
+  function paintLayer(m, most) {
+    if (layer.width !== m.width || layer.height !== m.height) { layer.width = m.width; layer.height = m.height; }
+    const out = layerContext.createImageData(m.width, m.height);
+    const d = out.data, n = m.width * m.height;
     if ($('heatmap').checked) {
-      // Intersection tests per pixel, on a log scale from black through red to yellow
-      let most = 1;
-      for (let i = 0; i < n; ++i) most = Math.max(most, m.heat[i]);
+      // Intersection tests per pixel, on a log scale
       const scale = 1 / Math.log1p(most);
       for (let i = 0; i < n; ++i) {
-        const v = Math.log1p(m.heat[i]) * scale;
-        out.data[4 * i] = 255 * Math.min(1, 2 * v);
-        out.data[4 * i + 1] = 255 * Math.max(0, 2 * v - 1);
-        out.data[4 * i + 2] = 64 * (1 - v) * (m.heat[i] > 0);
-        out.data[4 * i + 3] = 255;
+        const c = ramp(Math.log1p(m.heat[i]) * scale);
+        d[4 * i] = c[0]; d[4 * i + 1] = c[1]; d[4 * i + 2] = c[2]; d[4 * i + 3] = 255;
       }
     } else {
       for (let i = 0; i < n; ++i) {
-        out.data[4 * i] = m.image[3 * i];
-        out.data[4 * i + 1] = m.image[3 * i + 1];
-        out.data[4 * i + 2] = m.image[3 * i + 2];
-        out.data[4 * i + 3] = 255;
+        d[4 * i] = m.image[3 * i]; d[4 * i + 1] = m.image[3 * i + 1]; d[4 * i + 2] = m.image[3 * i + 2]; d[4 * i + 3] = 255;
       }
     }
-    if ($('misses').checked) {
-      // Each pixel's last cache miss, coloured by its reason
-      for (let i = 0; i < n; ++i) {
-        const c = kMissColours[m.misses[i]];
-        if (!m.misses[i] || !c) continue;
-        out.data[4 * i] = c[0];
-        out.data[4 * i + 1] = c[1];
-        out.data[4 * i + 2] = c[2];
-      }
+    const blend = (i, c, a) => { for (let k = 0; k < 3; ++k) d[4 * i + k] += (c[k] - d[4 * i + k]) * a; };
+    // The fill's regions (rc::regionLayer): the one being filled tinted, finished ones edged
+    for (let i = 0; i < m.regions.length; ++i) {
+      if (m.regions[i] === 1) blend(i, kRegion, 120 / 255);
+      else if (m.regions[i] === 2) blend(i, kRegionEdge, 220 / 255);
     }
-    context.putImageData(out, 0, 0);
-    // The pixel of the ray in focus, while the render is not done
+    // Misses at the path in focus (rc::missLayer), by reason
+    for (let i = 0; i < m.misses.length; ++i) if (m.misses[i] && kMissColours[m.misses[i]]) blend(i, kMissColours[m.misses[i]], 1);
+    layerContext.putImageData(out, 0, 0);
+  }
+
+  let drawnShapes = 0;
+  const drawnRoles = new Set();
+
+  // The render, or the two compared side by side, each in the image rectangle shown
+  function draw() {
+    const m = last;
+    if (!m) return;
+    const panes = m.compare ? [m, m.compare] : [m];
+    const v = viewRect || [0, 0, m.width, m.height];
+    const dpr = window.devicePixelRatio || 1;
+    const cssWidth = canvas.getBoundingClientRect().width || 512;
+    const W = Math.round(cssWidth * dpr), gap = panes.length > 1 ? Math.round(8 * dpr) : 0;
+    const paneWidth = (W - gap * (panes.length - 1)) / panes.length;
+    const H = Math.round(paneWidth * (v[3] - v[1]) / (v[2] - v[0]));
+    if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
+    context.setTransform(1, 0, 0, 1, 0, 0);
+    context.fillStyle = panes.length > 1 ? '#fff' : '#000';
+    context.fillRect(0, 0, W, H);
+    let most = 1;
+    for (const p of panes) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
+    drawnShapes = 0;
+    drawnRoles.clear();
+    panes.forEach((p, k) => {
+      const left = k * (paneWidth + gap);
+      context.save();
+      context.beginPath();
+      context.rect(left, 0, paneWidth, H);
+      context.clip();
+      context.fillStyle = '#000';
+      context.fillRect(left, 0, paneWidth, H);
+      const scale = paneWidth / (v[2] - v[0]);
+      context.setTransform(scale, 0, 0, scale, left - v[0] * scale, -v[1] * scale);
+      drawPane(p, most, dpr / scale);
+      context.restore();
+    });
+    $('overlay-count').textContent = drawnShapes;
+    $('overlay-roles').textContent = [...drawnRoles].sort().join(',');
+  }
+
+  // One render, in image coordinates; `px` is one CSS pixel in image units
+  function drawPane(m, most, px) {
+    paintLayer(m, most);
+    context.imageSmoothingEnabled = false;
+    context.drawImage(layer, 0, 0);
+    for (const shape of m.shapes) {
+      if (drawShape(shape, px)) { ++drawnShapes; drawnRoles.add(shape.role); }
+    }
+    const focus = m.legend.pixel;
+    if (m.shapes.length && focus !== undefined) dot(focus % m.width + 0.5, Math.floor(focus / m.width) + 0.5, 5 * px, kRay);
+    if (m.selectedPixel >= 0) {
+      const cx = m.selectedPixel % m.width + 0.5, cy = Math.floor(m.selectedPixel / m.width) + 0.5;
+      const half = Math.max(0.5, 7 * px);
+      widthScale = px;
+      strokePath([cx - half, cy - half, cx + half, cy - half, cx + half, cy + half, cx - half, cy + half], true,
+                 kSelection, 2.5 * px, false);
+    }
+    // A cross marks the pixel being traced, so that stepping shows on the image
     if (m.focusPixel >= 0 && !m.done) {
-      const x = m.focusPixel % m.width, y = Math.floor(m.focusPixel / m.width);
-      context.fillStyle = 'rgba(0, 255, 255, 0.35)';
-      context.fillRect(0, y, m.width, 1);
-      context.fillRect(x, 0, 1, m.height);
-      context.fillStyle = 'rgb(0, 255, 255)';
-      context.fillRect(x, y, 1, 1);
+      const cx = m.focusPixel % m.width + 0.5, cy = Math.floor(m.focusPixel / m.width) + 0.5, r = Math.max(0.7, 9 * px);
+      for (const [c, w] of [[[0, 0, 0], 4.5], [kRay, 2]]) {
+        context.strokeStyle = rgba(c);
+        context.lineWidth = w * px;
+        context.setLineDash([]);
+        context.beginPath();
+        context.moveTo(cx - r, cy); context.lineTo(cx + r, cy);
+        context.moveTo(cx, cy - r); context.lineTo(cx, cy + r);
+        context.stroke();
+      }
+    }
+    // The queue on top of everything: it is small and it is where the action is
+    if (m.frontier) {
+      const size = Math.max(1, 11 * px);
+      context.lineWidth = 1.5 * px;
+      context.strokeStyle = '#000';
+      context.setLineDash([]);
+      for (const [list, c] of [[m.frontier.deferred, kDeferred], [m.frontier.queued, kQueued]]) {
+        context.fillStyle = rgba(c);
+        for (const p of list) {
+          const x = p % m.width + 0.5 - size / 2, y = Math.floor(p / m.width) + 0.5 - size / 2;
+          context.fillRect(x, y, size, size);
+          context.strokeRect(x, y, size, size);
+        }
+      }
     }
   }
 
-  function showStatistics(s) {
-    const rows = [['rays', s.rays], ['eye rays', s.primary], ['shadow rays', s.shadow],
-                  ['reflection rays', s.reflection], ['refraction rays', s.refraction],
-                  ['intersection tests', s.tests], ['complete searches', s.searches],
-                  ['cache hits', s.hits], ['cache misses', s.misses],
-                  ['tests per ray', s.rays ? (s.tests / s.rays).toFixed(2) : '']];
-    $('stats').innerHTML = rows.map(([k, v]) => '<tr><td>' + k + '</td><td>' +
-      (typeof v === 'number' ? v.toLocaleString('en') : v) + '</td></tr>').join('');
+  // The caption (rc::focusCaption's lines); beside a compared render, its own and the
+  // difference in tests, as the Qt GUI's
+  function captionOf(m) {
+    let text = m.caption.trim();
+    if (m.compare) {
+      const a = m.statistics.tests, b = m.compare.statistics.tests;
+      text = 'left: ' + text + '\nright: ' + m.compare.caption.trim() +
+        '\ntests ' + b + ' = ' + (a > 0 ? (b / a).toFixed(2) : '0.00') + 'x the left\'s ' + a +
+        ', difference ' + (b >= a ? '+' : '') + (b - a) + ' tests';
+    }
+    return text;
+  }
+
+  // A closed outline or a polyline of flat [x, y, ...]: a dark halo, then the colour
+  function strokePath(xy, closed, colour, width, dashed, fill, covers) {
+    if (xy.length < 4) return false;
+    context.beginPath();
+    context.moveTo(xy[0], xy[1]);
+    for (let i = 2; i < xy.length; i += 2) context.lineTo(xy[i], xy[i + 1]);
+    if (closed) context.closePath();
+    if (fill > 0) {
+      context.fillStyle = rgba(colour, covers ? Math.min(fill, 25) : fill);
+      context.fill();
+    }
+    if (covers) return true;  // an outline holding the whole view has no edge to show
+    context.setLineDash([]);
+    context.strokeStyle = 'rgba(0,0,0,0.63)';
+    context.lineWidth = width + 2 * widthScale;
+    context.stroke();
+    context.setLineDash(dashed ? [5 * widthScale, 4 * widthScale] : []);
+    context.strokeStyle = rgba(colour);
+    context.lineWidth = width;
+    context.stroke();
+    return true;
+  }
+  let widthScale = 1;  // one CSS pixel in image units, while a shape is drawn
+
+  function dot(x, y, r, colour) {
+    context.beginPath();
+    context.arc(x, y, r, 0, 2 * Math.PI);
+    context.fillStyle = rgba(colour);
+    context.fill();
+    context.setLineDash([]);
+    context.strokeStyle = '#000';
+    context.lineWidth = 2 * r / 5;
+    context.stroke();
+  }
+
+  // One shape of the core's (rc::focusShapes), in its role's colour and line
+  function drawShape(shape, px) {
+    const style = kRoleStyles[shape.role];
+    if (!style) return false;
+    widthScale = px;
+    if (style.star) {
+      if (!shape.point) return false;
+      const [x, y] = shape.point;
+      context.setLineDash([]);
+      context.strokeStyle = rgba(style.colour);
+      context.lineWidth = (style.arms === 2 ? 2 : 3) * px;
+      context.beginPath();
+      for (let k = 0; k < style.arms; ++k) {
+        const a = (style.arms === 2 ? Math.PI / 4 : 0) + k * Math.PI / style.arms;
+        const dx = style.star * px * Math.cos(a), dy = style.star * px * Math.sin(a);
+        context.moveTo(x - dx, y - dy); context.lineTo(x + dx, y + dy);
+      }
+      context.stroke();
+      return true;
+    }
+    if (shape.segment) {
+      const [ax, ay, bx, by] = shape.segment;
+      if (Math.hypot(bx - ax, by - ay) <= 0.5) return false;
+      return strokePath(shape.segment, false, style.colour, style.width * px, style.dash, 0, false);
+    }
+    // A polygon may hold much of the view: dashed, never tinted
+    return strokePath(shape.outline, true, style.colour, style.width * px, style.dash || shape.flat,
+                      shape.flat ? 0 : style.fill, shape.covers);
+  }
+
+  // ---- The key and the statistics -----------------------------------------------------
+  function showKey(m) {
+    const keys = [];
+    const L = m.legend;
+    const names = kMissNames;
+    if ($('ov-cylinder').checked || $('ov-hull').checked)
+      keys.push([kRay, L.selected ? 'selected ray' : 'ray being traced']);
+    if ($('ov-cylinder').checked) keys.push([kCylinder, 'cylinder of safety (dashed: around this ray, not cached)']);
+    if ($('ov-hull').checked) {
+      if (L.blockerLists) {
+        keys.push([kHull, 'blocker hull of origin and target (dashed: empty cone of eye rays)']);
+        keys.push([kTarget, 'target (cached object)']);
+        keys.push([kBlocker, L.blockersListed > L.blockersShown
+          ? 'potential blockers: the ' + L.blockersShown + ' nearest of ' + L.blockersListed.toLocaleString('en') + ' listed'
+          : 'potential blockers']);
+      } else {
+        keys.push([kHull, 'blocker hull: blocker cache only']);
+      }
+    }
+    if (m.frontier) {
+      if (m.frontier.path) {
+        keys.push([kQueued, 'queued (' + m.frontier.queued.length + ')']);
+        keys.push([kDeferred, 'deferred seeds (' + m.frontier.deferred.length + ')']);
+        keys.push([kRegion, 'region ' + m.frontier.region + ' being filled, path ' + m.frontier.path]);
+        keys.push([kRegionEdge, 'edges of finished regions']);
+      } else {
+        keys.push([kQueued, 'frontier: breadth-first order only']);
+      }
+    }
+    if ($('ov-misses').checked) {
+      keys.push([null, 'misses marked at path ' + (L.path || 'eye') + '; all paths:']);
+      for (let r = 1; r < L.misses.length; ++r)
+        if (L.misses[r] > 0) keys.push([kMissColours[r], 'miss: ' + names[r] + ' (' + L.misses[r] + ')']);
+    }
+    if (L.cause && ($('ov-cylinder').checked || $('ov-hull').checked)) keys.push([kMissCause, L.cause]);
+    if ($('heatmap').checked) {
+      let most = 0;
+      for (const p of m.compare ? [m, m.compare] : [m]) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
+      keys.push([ramp(1), 'heatmap: intersection tests per pixel, log scale, 0 to ' + most +
+                 (m.compare ? ', one scale for both' : '')]);
+    }
+    if (m.selectedPixel >= 0)
+      keys.push([kSelection, 'selected pixel (' + m.selectedPixel % m.width + ',' + Math.floor(m.selectedPixel / m.width) + ')']);
+    $('key').innerHTML = '';
+    for (const [c, text] of keys) {
+      const li = document.createElement('li');
+      if (c) {
+        const i = document.createElement('i');
+        i.style.background = rgba(c);
+        li.appendChild(i);
+      }
+      li.appendChild(document.createTextNode(text));
+      $('key').appendChild(li);
+    }
+  }
+  let kMissNames = [];
+
+  function showStatistics(...renders) {
+    const rows = [['rays', 'rays'], ['eye rays', 'primary'], ['shadow rays', 'shadow'],
+                  ['reflection rays', 'reflection'], ['refraction rays', 'refraction'],
+                  ['intersection tests', 'tests'], ['complete searches', 'searches'],
+                  ['cache hits', 'hits'], ['cache misses', 'misses'], ['tests per ray', null]];
+    const cell = (s, key) => {
+      const v = key ? s[key] : s.rays ? (s.tests / s.rays).toFixed(2) : '';
+      return '<td>' + (typeof v === 'number' ? v.toLocaleString('en') : v) + '</td>';
+    };
+    const shown = renders.filter(Boolean);
+    $('stats').innerHTML = (shown.length > 1 ? '<tr><td></td><td>left</td><td>right</td></tr>' : '') +
+      rows.map(([label, key]) => '<tr><td>' + label + '</td>' + shown.map((s) => cell(s, key)).join('') + '</tr>').join('');
   }
 
   // The SHA-256 of the 8-bit RGB pixel bytes, rows top to bottom: `raycache render --hash`'s
@@ -151,28 +492,42 @@
     if (opened === generation) $('image-hash').textContent = [...digest].map((b) => b.toString(16).padStart(2, '0')).join('');
   }
 
-  // The Qt GUI's colours of the miss reasons (ui/palette.cpp), by MissReason's number
-  const kMissColours = [null, [153, 153, 153], [240, 228, 66], [0, 114, 178], [213, 94, 0], [230, 159, 0],
-                        [86, 180, 233], [204, 121, 167]];
-  function fillMissLegend(names) {
-    $('miss-legend').innerHTML = names.slice(1).map((name, i) => {
-      const c = kMissColours[i + 1] || [255, 255, 255];
-      return '<span><i style="background: rgb(' + c.join(',') + ')"></i>' + name.replace(/_/g, ' ') + '</span>';
-    }).join(' ');
-  }
-
-  // Controls; the URL's ?scene=S&width=W&height=H&cache=C&order=O&accel=A&run=end sets them
+  // ---- Controls; the URL's ?scene=S&width=W&height=H&cache=C&order=O&accel=A&run=end sets them
   for (const key of ['width', 'height', 'cache', 'order', 'accel'])
     if (params.has(key)) $(key).value = params.get(key);
-  $('open').onclick = open;
-  for (const id of ['scene', 'width', 'height', 'cache', 'order', 'accel']) $(id).onchange = open;
+  $('open').onclick = () => open();
+  $('as-written').onclick = () => { if (stop) applyStop(); };
+  // Another stop: the same page at it (the render starts afresh, as the Qt GUI's does)
+  const goToStop = (step) => {
+    const next = new URLSearchParams(location.search);
+    next.set('stop', String(+(params.get('stop') || 1) + step));
+    location.search = next.toString();
+  };
+  $('prev-stop').onclick = () => goToStop(-1);
+  $('next-stop').onclick = () => goToStop(1);
+  for (const id of ['scene', 'width', 'height', 'cache', 'order', 'accel', 'compare']) $(id).onchange = () => open();
   $('step-ray').onclick = () => worker.postMessage({ type: 'ray' });
   $('step-pixel').onclick = () => worker.postMessage({ type: 'pixel' });
   $('step-miss').onclick = () => worker.postMessage({ type: 'miss' });
   $('play').onclick = () => worker.postMessage({ type: last && last.running === 'play' ? 'pause' : 'play' });
   $('end').onclick = () => worker.postMessage({ type: 'end' });
+  for (const id of ['ov-cylinder', 'ov-hull', 'ov-frontier', 'ov-misses'])
+    $(id).onchange = () => worker.postMessage({ type: 'view', view: overlayChoice() });
   $('heatmap').onchange = draw;
-  $('misses').onchange = draw;
+  window.addEventListener('resize', draw);
+
+  // A click puts the pixel's eye ray in focus
+  canvas.onclick = (e) => {
+    if (!last) return;
+    const r = canvas.getBoundingClientRect();
+    const v = viewRect || [0, 0, last.width, last.height];
+    // Either picture of a comparison: the same pixel in both
+    const panes = last.compare ? 2 : 1;
+    const across = ((e.clientX - r.left) / r.width * panes) % 1;
+    const x = Math.floor(v[0] + across * (v[2] - v[0]));
+    const y = Math.floor(v[1] + (e.clientY - r.top) / r.height * (v[3] - v[1]));
+    worker.postMessage({ type: 'select', x, y });
+  };
 
   // An NFF file dropped on the picture
   canvas.ondragover = (e) => { e.preventDefault(); canvas.classList.add('dragging'); };
@@ -184,11 +539,7 @@
     if (!file) return;
     dropped = { name: file.name.replace(/[^A-Za-z0-9._-]/g, '_'), text: await file.text() };
     let option = [...$('scene').options].find((o) => o.value === 'dropped');
-    if (!option) {
-      option = document.createElement('option');
-      option.value = 'dropped';
-      $('scene').appendChild(option);
-    }
+    if (!option) option = addSceneOption('dropped', file.name);
     option.textContent = file.name;
     $('scene').value = 'dropped';
     open();

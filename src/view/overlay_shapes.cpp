@@ -20,6 +20,26 @@ void addCapsule(std::vector<OverlayShape>& out, const SafetyCylinder& c, const I
 
 }  // namespace
 
+const char* toString(ShapeRole r) {
+    switch (r) {
+        case ShapeRole::Cylinder: return "Cylinder";
+        case ShapeRole::CachedCylinder: return "CachedCylinder";
+        case ShapeRole::CylinderAxis: return "CylinderAxis";
+        case ShapeRole::EmptyCone: return "EmptyCone";
+        case ShapeRole::EmptyConeAxis: return "EmptyConeAxis";
+        case ShapeRole::Hull: return "Hull";
+        case ShapeRole::Origin: return "Origin";
+        case ShapeRole::Target: return "Target";
+        case ShapeRole::TargetPoint: return "TargetPoint";
+        case ShapeRole::Blocker: return "Blocker";
+        case ShapeRole::CylinderLeft: return "CylinderLeft";
+        case ShapeRole::MissedTarget: return "MissedTarget";
+        case ShapeRole::BlockerHit: return "BlockerHit";
+        case ShapeRole::Ray: return "Ray";
+    }
+    return "?";
+}
+
 OverlayShape objectShape(const Scene& scene, int object, const ImageProjector& proj, ShapeRole role) {
     const Object& obj = scene.objects[std::size_t(object)];
     // Polygons (ground planes) may cover the whole view: outlined only

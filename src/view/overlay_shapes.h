@@ -31,6 +31,10 @@ enum class ShapeRole {
     Ray,             ///< the ray's segment
 };
 
+/// The role's name as written above (Cylinder, CachedCylinder, ...): a viewer outside C++
+/// (the web edition's page) styles a shape by it.
+const char* toString(ShapeRole r);
+
 /// One shape: a closed outline, a segment or a point.
 struct OverlayShape {
     ShapeRole role;

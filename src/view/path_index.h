@@ -41,6 +41,8 @@ public:
     /// The committed event of `pixel` at the path, or -1.
     int eventAt(int pixel) const { return at(pixel).event; }
     int node() const { return node_; }
+    /// Pixels the index covers (width x height of the recorder).
+    std::size_t pixels() const { return at_.size(); }
     /// Events read so far.
     std::size_t read() const { return read_; }
 
