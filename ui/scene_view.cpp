@@ -315,6 +315,10 @@ void SceneView::paintBodies(QPainter& p, const std::vector<bool>& blocker, int t
         if (b.shape == rc::Shape::Polygon) {
             QPolygonF poly;
             for (const rc::Vec3& v : b.polygon) poly << toWidget(v);
+            if (const QRectF box = poly.boundingRect(); !bold && std::max(box.width(), box.height()) < 4.0 * lw) {
+                p.fillRect(box, line);  // a few pixels across: a dot, as for small discs below
+                continue;
+            }
             p.setPen(pen(line, (bold ? 2.5 : 1.0) * lw));
             p.setBrush(QColor(90, 90, 100, 90));
             p.drawPolygon(poly);
