@@ -28,6 +28,18 @@ worst = max(events) if events else (0.0, "none")
 over = sum(1 for ms, _ in events if ms > 100.0)
 print(f"{name:28s} tasks {len(events):7d}  slowest {worst[0]:8.1f} ms ({worst[1]})  over 100 ms: {over}"
       f"  first-frame {first[0] if first else float('nan'):7.1f} ms")
+# A tour: the slowest task of each stop (start-up counts to stop 1; a stop's tasks run
+# from its stop-K line to the next)
+stop, per = 1, {}
+for n, ms in tasks:
+    if n.startswith("stop-"):
+        stop = int(n[5:])
+    if n == "first-frame" or n.startswith("paint:"):
+        continue
+    per[stop] = max(per.get(stop, (0.0, "")), (float(ms), n))
+if any(n.startswith("stop-") for n, _ in tasks):
+    for k in sorted(per):
+        print(f"    stop {k:2d}  slowest {per[k][0]:7.1f} ms ({per[k][1]})")
 PY
 }
 echo "raycache-gui frame log, $(date -u +%Y-%m-%d), $(nproc) cores, clock ${RAYCACHE_FRAME_CLOCK:-wall}, load $(cut -d' ' -f1 /proc/loadavg); budget: 100 ms a task, 1000 ms to the first frame"
