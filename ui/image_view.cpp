@@ -46,6 +46,12 @@ void ImageView::fit() {
     emit viewMoved();
 }
 
+QRectF ImageView::shownImageRect() const {
+    const QRectF whole(imageToWidget(QPointF(0, 0)), imageToWidget(QPointF(image_.width(), image_.height())));
+    if (reserve_ <= 0.0) return whole;
+    return whole.intersected(QRectF(0, 0, std::max(50.0, width() - reserve_), height()));
+}
+
 void ImageView::setReserve(double pixels) {
     reserve_ = std::max(0.0, pixels);
     if (fitted_) refit();
@@ -92,6 +98,8 @@ void ImageView::paintEvent(QPaintEvent*) {
     p.fillRect(rect(), QColor(48, 48, 52));
     if (image_.isNull()) return;
     p.save();
+    // Nothing of the image in the reserved strip: the key goes there
+    if (reserve_ > 0.0) p.setClipRect(QRectF(0, 0, std::max(50.0, width() - reserve_), height()));
     p.translate(pan_);
     p.scale(zoom_, zoom_);
     // Nearest-neighbour scaling: pixels stay square at high zoom

@@ -47,6 +47,9 @@ public:
     /// Pixels kept free at the right when fitting: room for the key beside the image.
     void setReserve(double pixels);
     double reserve() const { return reserve_; }
+    /// Where the image shows in widget coordinates: its rectangle, less the reserved
+    /// strip (the image is not drawn there, even zoomed in), so a key beside it stays off it.
+    QRectF shownImageRect() const;
 
     QPointF imageToWidget(const QPointF& p) const { return pan_ + zoom_ * p; }
     QPointF widgetToImage(const QPointF& w) const { return (w - pan_) / zoom_; }

@@ -93,9 +93,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     compareView_->setLegendHook([this](QPainter& p, const QRectF& area) {
         if (const rc::SessionState* c = compare_.state(); c && compareChoice_) {
-            const QRectF image(compareView_->imageToWidget(QPointF(0, 0)),
-                               compareView_->imageToWidget(QPointF(compareView_->image().width(), compareView_->image().height())));
-            comparePainter_.paintLegend(p, *c, overlays_, compareSelection(), area, image);
+            comparePainter_.paintLegend(p, *c, overlays_, compareSelection(), area, compareView_->shownImageRect());
             keepLegendBeside(compareView_, comparePainter_);
         }
     });
@@ -125,9 +123,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     view_->setLegendHook([this](QPainter& p, const QRectF& area) {
         if (const rc::SessionState* s = controller_.state()) {
-            const QRectF image(view_->imageToWidget(QPointF(0, 0)),
-                               view_->imageToWidget(QPointF(view_->image().width(), view_->image().height())));
-            overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, image);
+            overlayPainter_.paintLegend(p, *s, overlays_, selection_, area, view_->shownImageRect());
             keepLegendBeside(view_, overlayPainter_);
         }
     });
