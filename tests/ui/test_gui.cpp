@@ -79,7 +79,8 @@ QPointF farVertex(const QPolygonF& poly, const ImageView& view) {
     double score = -1;
     for (const QPointF& p : poly) {
         const QPointF w = view.imageToWidget(p);
-        if (w.x() < 4 || w.y() < 4 || w.x() > view.width() - 4 || w.y() > view.height() - 4) continue;
+        // Inside the view, out of the strip it keeps for the key (nothing is drawn there)
+        if (w.x() < 4 || w.y() < 4 || w.x() > view.width() - view.reserve() - 4 || w.y() > view.height() - 4) continue;
         if (w.x() + w.y() > score) {
             score = w.x() + w.y();
             best = w;
