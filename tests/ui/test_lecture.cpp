@@ -20,6 +20,7 @@
 #include "gui_options.h"
 #include "image_view.h"
 #include "main_window.h"
+#include "overlay_painter.h"
 #include "ray_tree_panel.h"
 #include "scene/builtin_scenes.h"
 #include "stats_panel.h"
@@ -343,4 +344,41 @@ TEST_CASE("The event log holds the newest rays of a long render, a bounded numbe
     REQUIRE(model.total() == int(s.recorder().misses().size()));
     REQUIRE(model.rowCount() == std::min(model.total(), EventLogModel::kMaxRows));
     REQUIRE(model.eventAt(model.rowCount() - 1) == s.recorder().misses()[s.recorder().misses().size() - 1]);
+}
+
+TEST_CASE("The misses and region layers read a long log over several paints", "[gui][stall]") {
+    rc::RenderOptions ro;
+    ro.cache = rc::CacheKind::Blocker;
+    ro.order = rc::OrderKind::BreadthFirst;
+    ro.width = ro.height = 64;
+    rc::SessionState s({std::make_shared<const rc::Scene>(rc::loadScene("pair")), ro});
+    REQUIRE(s.runUntil(rc::RunGoal::ToStep, 6000));
+    const std::size_t events = s.recorder().events().size();
+    const std::size_t budget = 1000;
+    REQUIRE(events > 3 * budget);
+    OverlayPainter painter;
+    int asked = 0;
+    painter.setEventBudget(budget, [&] { ++asked; });
+    Overlays o;
+    o.misses = o.frontier = true;
+    QImage target(64, 64, QImage::Format_ARGB32_Premultiplied);
+    // Each paint reads a budget's worth of events into each layer, and asks for the next
+    int paints = 0;
+    do {
+        QPainter p(&target);
+        painter.paint(p, s, o, rc::Selection{}, 1.0);
+        ++paints;
+    } while (painter.layersPending() && paints < 1000);
+    REQUIRE(!painter.layersPending());
+    REQUIRE(std::size_t(paints) == (events + budget - 1) / budget);
+    REQUIRE(asked == paints - 1);
+    // With the log read, more events cost one more paint, and nothing is asked for
+    REQUIRE(s.runUntil(rc::RunGoal::ToStep, 6500));
+    REQUIRE(s.recorder().events().size() - events < budget);
+    {
+        QPainter p(&target);
+        painter.paint(p, s, o, rc::Selection{}, 1.0);
+    }
+    REQUIRE(!painter.layersPending());
+    REQUIRE(asked == paints - 1);
 }
