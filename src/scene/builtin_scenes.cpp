@@ -26,7 +26,8 @@ const std::array<Vec3, 5> kPalette = {Vec3(0.90, 0.30, 0.25), Vec3(0.30, 0.80, 0
                                       Vec3(0.85, 0.85, 0.85)};
 
 // [cube-scene]
-/// The paper's Table 1 scene: an N x N x N lattice of jittered spheres.
+/// After the paper's Table 1 scene: an N x N x N lattice of jittered spheres (the details
+/// are RayCache's, see docs/pages/table1.md).
 Scene makeCube(int n, std::uint64_t seed) {
     Scene s;
     s.name = "cube:" + std::to_string(n);
@@ -218,7 +219,7 @@ bool endsWithNff(const std::string& s) {
 
 std::vector<BuiltinInfo> builtinScenes() {
     return {
-        {"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), the paper's Table 1 scene",
+        {"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), after the paper's Table 1 scene",
          {2, 3, 4, 5, 6, 8}},
         {"balls:N",
          "SPD's sphereflake of size N (1 <= N <= " + std::to_string(kMaxSphereflake) +

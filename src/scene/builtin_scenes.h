@@ -27,8 +27,9 @@ struct BuiltinInfo {
 std::vector<BuiltinInfo> builtinScenes();
 
 /// Builds the built-in scene named by `spec`:
-/// - `cube:N` (1 <= N <= 64): the paper's Table 1 scene, N^3 jittered reflective spheres
-///   on a lattice, seen from a corner so that the cube fills the view; 512x512.
+/// - `cube:N` (1 <= N <= 64): RayCache's reconstruction of the paper's Table 1 scene (the
+///   lattice is the paper's; jitter, radii, lights, materials, view and depth are
+///   RayCache's), N^3 jittered reflective spheres on a lattice, seen from a corner so that the cube fills the view; 512x512.
 /// - `balls:N` (1 <= N <= kMaxSphereflake): SPD's sphereflake of size N, as
 ///   `balls -s N -c -r 0` prints it (makeSphereflake()); 1 + 9 + ... + 9^N spheres
 ///   (SPD's default size 4: 7,381) on a ground square; 512x512. Does not depend on `seed`.
