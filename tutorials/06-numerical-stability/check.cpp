@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "exercise.h"
+#include "geometry/intersection.h"
 #include "scene/nff_reader.h"
 #include "search/query.h"
 #include "tutorial_picture.h"
@@ -33,7 +34,7 @@ rc::Ray rayTowards(tutorial::Random& rnd, const rc::Sphere& s, double distance, 
 // The student's roots must match the library's to 1e-12 of the problem's size
 void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
     const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
-    const rc::SphereRoots got = tutorial::stableRoots(ray, s);
+    const tutorial::Roots got = tutorial::stableRoots(ray, s);
     INFO(std::setprecision(17) << "sphere radius " << s.r << " at distance " << glm::length(s.c - ray.o) << ", aimed " << aim
                           << " radii off centre; library: hit " << want.hit << " t0 " << want.t0 << " t1 "
                           << want.t1 << "; yours: hit " << got.hit << " t0 " << got.t0 << " t1 " << got.t1);
@@ -102,7 +103,7 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
         // Aim at a point well inside the sphere: a clear hit, the near root tiny
         const rc::Ray ray{o, glm::normalize(c + 0.5 * r * rnd.direction() - o)};
         const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
-        const rc::SphereRoots got = tutorial::stableRoots(ray, s);
+        const tutorial::Roots got = tutorial::stableRoots(ray, s);
         INFO(std::setprecision(17) << "sphere radius " << r << ", origin " << std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - r
                               << " outside it; library t0 " << want.t0 << ", yours " << got.t0 << " (relative error "
                               << std::abs(got.t0 - want.t0) / want.t0 << ")");
@@ -124,7 +125,7 @@ TEST_CASE("far.nff drawn with your roots matches the stable roots", "[tutorial06
     auto firstHit = [&](const rc::Ray& ray, auto roots) {
         rc::Answer best;
         for (int j = 0; j < int(s.spheres.size()); ++j) {
-            const rc::SphereRoots r = roots(ray, s.spheres[j]);
+            const auto r = roots(ray, s.spheres[j]);
             const double t = !r.hit ? rc::kNoHit : r.t0 > 0.0 ? r.t0 : r.t1 > 0.0 ? r.t1 : rc::kNoHit;
             if (t < rc::kNoHit && rc::nearer(t, j, best)) best = {j, t};
         }

@@ -9,7 +9,7 @@
 namespace tutorial {
 
 // [stub]
-rc::SphereRoots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
+Roots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
     // TODO: this is the textbook formula. It is right on paper and wrong in doubles when
     // the sphere is small and far away: b*b and c are huge and nearly equal. Make it stable.
     const rc::Vec3 f = ray.o - s.c;

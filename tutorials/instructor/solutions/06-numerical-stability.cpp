@@ -9,7 +9,7 @@
 namespace tutorial {
 
 // [solution]
-rc::SphereRoots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
+Roots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
     const rc::Vec3 f = ray.o - s.c;
     const double b = glm::dot(f, ray.d);
     // r^2 - |l|^2 with l the centre's perpendicular offset: no large squares cancel
