@@ -9,7 +9,9 @@ OUT_DIR/tour_PAGE.md holds the stops whose "page" is PAGE, for that page to incl
 every PAGE given gets one, empty when no stop names it. When HAVE_WEB is 1 (the docs build
 copied the web edition into html/web/), each stop there is also a live figure: the viewer
 opened at the stop (web/index.html?tour=NAME&stop=K&embed=1) in an iframe, above its
-static screenshot; the Lecture page links each stop to it."""
+static screenshot; the Lecture page links each stop to it. A PAGE written NAME=K,K,...
+gets the stops numbered K instead (the lesson plan's figures for the board), each linked
+to the live viewer when there is one."""
 import json
 import sys
 
@@ -65,6 +67,14 @@ def main() -> int:
     with open(f"{out}/lecture_measured.md", "w", encoding="utf-8") as f:
         f.write("\n\n".join(lines))
     for page in pages:
+        if "=" in page:
+            page, numbers = page.split("=", 1)
+            text = "\\par\nThe stops of the \\ref lecture to show in class, made by the docs build.\n\n"
+            text += "".join(figure(tour_path, int(k), stops[int(k) - 1], pictures, "link" if web else "")
+                            for k in numbers.split(","))
+            with open(f"{out}/tour_{page}.md", "w", encoding="utf-8") as f:
+                f.write(text + "\n")
+            continue
         mine = [(k, s) for k, s in enumerate(stops, 1) if s.get("page") == page]
         text = ""
         if mine:
