@@ -29,8 +29,10 @@ class Spheres {
 public:
     /// Sphere j as the eye sees it: a disc of directions.
     struct Disc {
-        double centreAngle;  ///< radians between the axis asked about and the direction to j's centre
-        double radius;       ///< the disc's angular radius, asin(r_j / |c_j - eye|) (pi: the eye is inside)
+        /// Radians between the axis asked about and the direction to sphere j's centre.
+        double centreAngle;
+        /// The disc's angular radius, asin(r_j / |c_j - eye|) (pi: the eye is inside).
+        double radius;
     };
     virtual ~Spheres() = default;
     /// The number of spheres, n. Free.
