@@ -11,6 +11,7 @@
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
 #include "search/bounding_volume_hierarchy.h"
+#include "search/linear_search.h"
 #include "uniform.h"
 
 using namespace rc;

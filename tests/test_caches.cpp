@@ -15,6 +15,7 @@
 #include "search/bounding_volume_hierarchy.h"
 #include "search/cylinder_cache.h"
 #include "search/direction_lists.h"
+#include "search/linear_search.h"
 #include "uniform.h"
 
 using namespace rc;

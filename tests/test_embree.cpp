@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "random_scenes.h"
-#include "search/complete_search.h"
+#include "search/linear_search.h"
 #include "search/embree_search.h"
 #include "uniform.h"
 

@@ -9,6 +9,7 @@
 #include "random_scenes.h"
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
+#include "search/linear_search.h"
 #include "search/uniform_grid.h"
 #include "uniform.h"
 

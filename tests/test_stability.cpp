@@ -26,7 +26,7 @@
 #include "render/parallel_render.h"
 #include "render/render_session.h"
 #include "search/blocker_cache.h"
-#include "search/complete_search.h"
+#include "search/linear_search.h"
 
 using namespace rc;
 

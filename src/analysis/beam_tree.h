@@ -79,8 +79,7 @@ private:
     };
     /// The rays of one path in recording order: small blocks, each twice the last (most
     /// paths hold few rays), then blocks of one huge page each where the system has them
-    /// (a 4 KB page first touched costs a fault, 11 us on the virtual machine this was
-    /// measured on).
+    /// (every 4 KB page first touched costs a fault).
     struct PathLog {
         std::vector<Block> blocks;
         /// Where the next ray goes in the last block, and the end of its room (null: no

@@ -13,6 +13,7 @@
 #include "render/session_checkpoint.h"
 #include "search/accelerator.h"
 #include "search/cache_strategy.h"
+#include "search/linear_search.h"
 #include "trace/shading.h"
 #include "trace/trace_event.h"
 

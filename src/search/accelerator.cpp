@@ -2,6 +2,7 @@
 
 #include "search/bounding_volume_hierarchy.h"
 #include "search/embree_search.h"
+#include "search/linear_search.h"
 #include "search/uniform_grid.h"
 
 namespace rc {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "search/complete_search.h"
+#include "search/sphere_batch.h"
 
 namespace rc {
 

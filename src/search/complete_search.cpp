@@ -1,7 +1,5 @@
 #include "search/complete_search.h"
 
-#include "search/bounding_volume_hierarchy.h"
-
 #include <algorithm>
 
 #include <glm/common.hpp>
@@ -23,36 +21,6 @@ double CompleteSearch::clearance(const Vec3& a, const Vec3& b, int skip, int ski
     cull(c);
     if (nearest) *nearest = c.nearest;
     return c.least;
-}
-
-double LinearSearch::clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                               double stopBelow, int* nearest) const {
-    if (regions_) return regions_->clearance(a, b, skip, skipToo, cap, stopBelow, nearest);
-    return CompleteSearch::clearance(a, b, skip, skipToo, cap, stopBelow, nearest);
-}
-
-void LinearSearch::cull(SphereCull& c) const {
-    if (regions_) {
-        regions_->cull(c);
-    } else {
-        CompleteSearch::cull(c);
-    }
-}
-
-LinearSearch::LinearSearch(const Scene& scene, Regions regions) : CompleteSearch(scene) {
-    for (int id = 0; id < scene.size(); ++id) all_.add(scene, id);
-    if (regions == Regions::Hierarchy) regions_ = std::make_unique<const BoundingVolumeHierarchy>(scene);
-}
-
-LinearSearch::~LinearSearch() = default;
-
-Answer LinearSearch::nearest(const Query& q, Counters& n) const {
-    // [linear-search]
-    // Test every object; keep the nearest hit in front of tmax
-    Answer best;
-    all_.test(scene_, q, 0, all_.size(), best, n);
-    return best;
-    // [linear-search]
 }
 
 }  // namespace rc

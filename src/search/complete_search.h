@@ -1,13 +1,11 @@
 #pragma once
 /// \file
-/// \brief The complete search: what every cache falls back on when it misses.
-#include <memory>
+/// \brief The complete search: what every cache falls back on when it misses. The paper's
+/// own, which tests every object, is LinearSearch (search/linear_search.h).
 #include <string>
-#include <vector>
 
 #include "search/query.h"
 #include "search/segment_clearance.h"
-#include "search/sphere_batch.h"
 #include "search/sphere_cull.h"
 
 namespace rc {
@@ -42,34 +40,6 @@ public:
 protected:
     explicit CompleteSearch(const Scene& scene) : scene_(scene) {}
     const Scene& scene_;
-};
-
-class BoundingVolumeHierarchy;
-
-/// Tests every object in the scene: the paper's "standard ray-tracing algorithm".
-///
-/// Rays only. The caches' region queries (which objects meet a blocker hull, a cylinder
-/// of safety, an empty cone) are the caches' own bookkeeping, not a search for a ray: they
-/// go through a hierarchy of bounding spheres built once per scene, so a cache builds a
-/// list or a cylinder without measuring every object. (RayCache's choice: the paper does not
-/// say how lists are found. `Regions::Scan` measures every object instead.)
-class LinearSearch final : public CompleteSearch {
-public:
-    /// How region queries (cull(), clearance()) are answered.
-    enum class Regions { Hierarchy, Scan };
-    explicit LinearSearch(const Scene& scene, Regions regions = Regions::Hierarchy);
-    ~LinearSearch() override;
-    Answer nearest(const Query& q, Counters& n) const override;
-    void cull(SphereCull& c) const override;
-    double clearance(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
-                     double stopBelow = -kNoHit, int* nearest = nullptr) const override;
-    std::string name() const override { return "linear"; }
-    bool cheap() const override { return false; }
-
-private:
-    SphereBatch all_;  ///< every object, in id order
-    /// The bounding spheres of the objects, for region queries (none: scan them all)
-    std::unique_ptr<const BoundingVolumeHierarchy> regions_;
 };
 
 }  // namespace rc

@@ -27,18 +27,15 @@ struct StepCheckpoint {
 /// replays at most about D / 2, and a render of n spacings keeps about 2 log2 n + 2
 /// checkpoints. Step 0 is always kept.
 ///
-/// Measured (`build/ui/raycache_step_back_bench cube:5 512 CACHE ORDER SPACING`, 717,145
-/// steps, on the 2-core machine shared with other jobs, whose load makes times swing by 2x):
-/// a checkpoint holds 0.3 to 3.5 MB (the fill's queued rays, 144 bytes each, and the
-/// scanlines of its band), and fresh memory there costs about 7 ms a megabyte to touch, so
-/// checkpoints reuse the memory of those they drop. Every 10,000 steps, blocker/bfs ran to
-/// the end in 0.49 s against 0.27 s without checkpoints. Every 40,000 steps the run cost
-/// nothing measurable, but a step back took up to 76 ms under load (cylinder/scanline).
-/// Every 20,000 steps: the run 0.95 s against 0.72 s (blocker/bfs) and 0.84 s against 0.80 s
-/// (cylinder/scanline), a step back at most 27 ms. 20,000 it is: the margin under 100 ms.
+/// A checkpoint holds the fill's queued rays and the scanlines of its band, and fresh memory
+/// costs a fault a page to touch, so checkpoints reuse the memory of those they drop. The
+/// spacing trades the run's cost (closer checkpoints copy more) against a step back's
+/// (farther ones replay more): the default keeps a step back well under the tenth of a
+/// second a click may take. `build/ui/raycache_step_back_bench cube:5 512 CACHE ORDER SPACING`
+/// measures both for a spacing.
 class StepCheckpoints {
 public:
-    /// Spacing (see the measurements above).
+    /// Spacing (raycache_step_back_bench measures it, see above).
     static constexpr std::int64_t kEvery = 20000;
 
     explicit StepCheckpoints(std::int64_t every = kEvery) : every_(every) {}

@@ -10,7 +10,7 @@
 
 #include "exercise.h"
 #include "scene/builtin_scenes.h"
-#include "search/complete_search.h"
+#include "search/linear_search.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 

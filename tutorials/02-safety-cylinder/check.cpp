@@ -15,7 +15,7 @@
 #include "geometry/intersection.h"
 #include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
-#include "search/complete_search.h"
+#include "search/linear_search.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 

@@ -13,7 +13,7 @@
 #include "geometry/cone.h"
 #include "scene/builtin_scenes.h"
 #include "search/blocker_lists.h"
-#include "search/complete_search.h"
+#include "search/linear_search.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 

@@ -17,7 +17,7 @@
 #include "exercise.h"
 #include "order/breadth_first_order.h"
 #include "scene/builtin_scenes.h"
-#include "search/complete_search.h"
+#include "search/linear_search.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
