@@ -87,7 +87,7 @@ protected:
 /// the number of scanlines breadth-first and progressive orders work on at a time (0: all).
 /// `samples`: eye rays per pixel (distributed ray tracing's pixel samples; each has its
 /// own eye path). `cheapTests`: whether to ask the cache cheaply first and defer what it
-/// cannot answer (CacheStrategy::defersMisses; never with no cache): else every ray is
+/// cannot answer (defersMisses(), order/deferral_policy.h; never with no cache): else every ray is
 /// asked fully when its turn comes.
 std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int rowBegin, int rowEnd, int band, int samples,
                                     bool cheapTests, RayOrder::EyeMaker makeEye);

@@ -1,5 +1,7 @@
 #include "render/render_session.h"
 
+#include "order/deferral_policy.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -25,8 +27,8 @@ int bandFor(AccelKind accel, CacheKind cache) {
     // [band-for]
     // Large regions where they save complete searches: in front of the linear scan, where
     // a search is dear, for a cache that defers its misses. Elsewhere, little memory
-    const bool defers = cache == CacheKind::Cylinder || cache == CacheKind::Blocker || cache == CacheKind::BlockerPlus;
-    return accel == AccelKind::Linear && defers ? 8 : 1;
+    const bool linear = accel == AccelKind::Linear;
+    return linear && defersMisses(cache, !linear) ? 8 : 1;
     // [band-for]
 }
 
@@ -44,7 +46,7 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
       paths_(options_.sampleEntries),
       image_(options_.width, options_.height, options_.rowBegin, options_.rowEnd) {
     order_ = makeOrder(options_.order, options_.width, options_.rowBegin, options_.rowEnd, options_.band,
-                       options_.shading.sampling.spp, strategy_->defersMisses(),
+                       options_.shading.sampling.spp, defersMisses(options_.cache, search_->cheap()),
                        [this](int pixel, int sample, RayTask& t) {
                            ++primaries_;
                            eyeTask(pixel, sample, t);

@@ -36,7 +36,8 @@ namespace rc {
 /// - `Variant::Directions` (`--cache blocker+dir`) is blocker+ whose misses, in front of
 ///   the linear scan, test the objects listed for the ray's direction from its site
 ///   (DirectionLists) instead of the whole scene. Rays that hit nothing keep no cylinder
-///   or cone: their list answers them. No ray is deferred: a miss is cheap.
+///   or cone: their list answers them. No ray is deferred (order/deferral_policy.h): a
+///   miss is cheap.
 class BlockerCache : public CacheStrategy {
 public:
     enum class Variant { Paper, Plus, Directions };
@@ -44,13 +45,6 @@ public:
     CacheKind kind() const override {
         return directed_ ? CacheKind::BlockerDirections : plus_ ? CacheKind::BlockerPlus : CacheKind::Blocker;
     }
-    /// Blocker+ in front of a grid or a hierarchy: no. Deferring a ray costs a second
-    /// lookup and a place in the queue, more than the search it would save (balls2 at
-    /// 512x512, bvh, bfs, band 16: 113,288 complete searches and 212,884 deferrals, against
-    /// 127,806 searches and none; the render 2% faster, and 1% fewer tests)
-    /// Blocker+dir: no either, where its misses test direction lists: a deferral costs more
-    /// than the few tests of a list
-    bool defersMisses() const override { return !(plus_ && (search_.cheap() || directions_)); }
     /// The lookup of one ray (AsideBlockerCache adds the stepping aside of whole paths).
     Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) override;
     const BlockerLists* blockerLists() const override { return &lists_; }
@@ -83,8 +77,8 @@ private:
     bool directed_;  ///< blocker+dir
     BlockerLists lists_;
     /// Blocker+: the entry last used for rays of each (origin site, kind), 3 kinds (shadow
-    /// rays keep no entry): its place in kept_, or kNotKept. Only origins met take room
-    /// (on balls:4, room for every origin took 11 ms to set up, before the first ray)
+    /// rays keep no entry): its place in kept_, or kNotKept. Only origins met take room in
+    /// kept_, so a scene of many objects sets up no entry before its first ray
     std::vector<std::uint32_t> byOrigin_;
     std::vector<CacheEntry> kept_;
     static constexpr std::uint32_t kNotKept = std::uint32_t(-1);

@@ -78,10 +78,6 @@ public:
     virtual Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) = 0;
     /// Can a cheap lookup fail? (Not without a cache: every lookup searches.)
     virtual bool caches() const { return true; }
-    /// Should breadth-first order ask cheaply first, and defer a ray whose cheap lookup
-    /// fails to seed a later region? That saves a complete search only where one costs
-    /// more than asking twice; otherwise the ray is asked fully at once.
-    virtual bool defersMisses() const { return caches(); }
     /// The blocker lists, for strategies that have them.
     virtual const BlockerLists* blockerLists() const { return nullptr; }
 
