@@ -80,6 +80,7 @@ std::optional<SceneAngle> parseSceneAngle(const QString& s) {
 }
 
 ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message) {
+    // Declare the options, in the groups the help lists
     QCommandLineParser p;
     p.setApplicationDescription(
         "RayCache: step through ray tracing ray by ray, with Hanrahan's (1986) blocker lists,\n"
@@ -139,6 +140,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         message = p.helpText();
         return ParseResult::Help;
     }
+    // Lectures: the tour and its stop, the frame log, the goal to run to, the panels, the focus
     if (args.size() <= 1 || p.isSet(tour)) {
         if (p.isSet(tour)) out.tour = p.value(tour);
         if (p.isSet(stop) && (!p.isSet(tour) || !parseInt(p.value(stop), 1, 100000, out.stop))) {
@@ -185,11 +187,13 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (i < 0) { message = "--miss-reason must be " + oneOf(names) + ", not '" + p.value(missReason) + "'"; return ParseResult::Error; }
         out.missReason = rc::MissReason(i + 1);
     }
+    // No arguments: the first impression
     if (args.size() <= 1) {
         out.firstImpression = true;
         out.steps = kFirstImpressionSteps;
         out.overlays = *Overlays::parse("cylinder,cone,frontier");
     }
+    // The scene
     const QStringList pos = p.positionalArguments();
     if (pos.size() > 1) {
         message = "only one scene may be given";
@@ -199,6 +203,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         out.scene = pos[0];
         out.sceneGiven = true;
     }
+    // What renders: cache, order, image size, steps
     if (p.isSet(cache)) {
         const auto k = rc::parseCacheKind(p.value(cache).toStdString());
         if (!k) { message = "--cache must be " + oneOf(cacheNames()) + ", not '" + p.value(cache) + "'"; return ParseResult::Error; }
@@ -216,6 +221,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         out.steps = p.value(steps).toLongLong(&ok);
         if (!ok || out.steps < 0) { message = "--steps must be a non-negative integer"; return ParseResult::Error; }
     }
+    // What is drawn: overlays and heatmap
     if (p.isSet(overlays)) {
         const auto o = Overlays::parse(p.value(overlays));
         if (!o) { message = "--overlays takes a comma-separated list of cylinder, cone, frontier, misses, samples, grid, all, none"; return ParseResult::Error; }
@@ -226,6 +232,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (!h) { message = "--heatmap must be none, tests, hitmiss, hitrate, order or beam"; return ParseResult::Error; }
         out.heatmap = *h;
     }
+    // Screenshots and recordings
     if (p.isSet(screenshot)) out.screenshot = p.value(screenshot);
     if (p.isSet(record)) out.record = p.value(record);
     if (p.isSet(every)) {
@@ -238,6 +245,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (!parsePair(p.value(window).toLower(), 'x', w, h) || w < 200 || h < 200) { message = "--window must be WxH, at least 200x200"; return ParseResult::Error; }
         out.window = QSize(w, h);
     }
+    // The pixel and ray in focus, the complete search, the zoom
     if (p.isSet(select)) {
         int x = 0, y = 0;
         QString v = p.value(select);
@@ -260,6 +268,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         out.zoom = p.value(zoom).toDouble(&ok);
         if (!ok || out.zoom < 0.1 || out.zoom > 200) { message = "--zoom must be a number in [0.1, 200]"; return ParseResult::Error; }
     }
+    // Presentation, the compared render, the scene view
     out.largeFonts = p.isSet(large);
     out.present = p.isSet(present);
     if (p.isSet(compare)) {

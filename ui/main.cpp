@@ -14,6 +14,7 @@
 
 int main(int argc, char** argv) {
     rcgui::FrameLog::sinceStart();  // the clock of first-frame starts here
+    // Parse the command line: help exits 0, a bad option 2
     QStringList args;
     for (int i = 0; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
     QTextStream out(stdout), err(stderr);

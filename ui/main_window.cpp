@@ -59,6 +59,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     reportError_ = [this](const QString& title, const QString& message) {
         QMessageBox::critical(this, title, message);
     };
+    // The views side by side: the image, the compared render's, the scene
     view_ = new ImageView(this);
     compareView_ = new ImageView(this);
     sceneView_ = new SceneView(this);
@@ -118,6 +119,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&compare_, &SessionController::snapshot, this, [this](const QImage& img, qint64, double) {
         if (heatmap_ == Heatmap::None) compareView_->setImage(img);
     });
+    // The first render's overlays, key and tooltips
     view_->setOverlayHook([this](QPainter& p, double scale) {
         if (const rc::SessionState* s = controller_.state()) overlayPainter_.paint(p, *s, overlays_, selection_, scale);
     });
@@ -131,9 +133,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(view_, &ImageView::pixelClicked, this, &MainWindow::selectPixel);
     connect(view_, &ImageView::cleared, this, [this] { selectPixel(-1, -1); });
 
+    // Toolbars and panels
     buildToolbars();
     buildDocks();
 
+    // The controllers' news: changes, failures, runs
     connect(&controller_, &SessionController::changed, this, &MainWindow::refresh);
     connect(&controller_, &SessionController::failed, this, [this](const QString& why) {
         reportError_("Cannot start the render", why);
@@ -168,6 +172,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (pending_ && completed) continuePending();
         else pending_.reset();
     });
+    // Play, the tour bar, a size that fits the screen
     playTimer_.setInterval(33);
     connect(&playTimer_, &QTimer::timeout, this, &MainWindow::onPlayTick);
     buildTourBar();
@@ -414,6 +419,7 @@ void MainWindow::buildToolbars() {
     openAct_->setShortcut(QKeySequence::Open);
     connect(sceneBox_, &QComboBox::activated, this, [this](int i) { loadScene(sceneBox_->itemData(i).toString()); });
 
+    // The cache
     cacheBox_ = new QComboBox(this);
     cacheBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     // Every cache, RayCache's blocker+ and blocker+dir beside the paper's two
@@ -423,6 +429,7 @@ void MainWindow::buildToolbars() {
     render->addWidget(cacheBox_);
     connect(cacheBox_, &QComboBox::activated, this, [this](int i) { setCache(rc::CacheKind(cacheBox_->itemData(i).toInt())); });
 
+    // The order
     orderBox_ = new QComboBox(this);
     orderBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     for (auto k : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
@@ -433,6 +440,7 @@ void MainWindow::buildToolbars() {
     render->addWidget(orderBox_);
     connect(orderBox_, &QComboBox::activated, this, [this](int i) { setOrder(rc::OrderKind(orderBox_->itemData(i).toInt())); });
 
+    // The complete search
     accelBox_ = new QComboBox(this);
     accelBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     for (auto k : {rc::AccelKind::Linear, rc::AccelKind::Grid, rc::AccelKind::Bvh})
@@ -442,6 +450,7 @@ void MainWindow::buildToolbars() {
     render->addWidget(accelBox_);
     connect(accelBox_, &QComboBox::activated, this, [this](int i) { setAccel(rc::AccelKind(accelBox_->itemData(i).toInt())); });
 
+    // The image size
     sizeBox_ = new QComboBox(this);
     sizeBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     sizeBox_->addItem("scene's", 0);
@@ -452,6 +461,7 @@ void MainWindow::buildToolbars() {
         sizeChoice_ = sizeBox_->itemData(i).toInt();
         resetSession();
     });
+    // A second render to compare with
     compareBox_ = new QComboBox(this);
     compareBox_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     compareBox_->setMinimumContentsLength(12);
@@ -472,6 +482,7 @@ void MainWindow::buildToolbars() {
     addToolBarBreak();
     QToolBar* step = addToolBar("Step");
     step->setObjectName("step");
+    // Step a ray, a pixel, to the next miss or deferral, to a step, back
     stepRayAct_ = step->addAction("Step ray", this, &MainWindow::stepRay);
     stepRayAct_->setShortcut(Qt::Key_Space);
     stepRayAct_->setToolTip("Trace exactly one ray (Space)");
@@ -495,6 +506,7 @@ void MainWindow::buildToolbars() {
     backAct_ = step->addAction("Step back", this, &MainWindow::stepBack);
     backAct_->setShortcut(Qt::Key_Backspace);
     backAct_->setToolTip("Rebuild and replay to one step before (the core is deterministic)");
+    // Play at a speed, run to the end, cancel
     playAct_ = step->addAction("Play");
     playAct_->setCheckable(true);
     connect(playAct_, &QAction::toggled, this, &MainWindow::setPlaying);
@@ -516,6 +528,7 @@ void MainWindow::buildToolbars() {
     addToolBarBreak();
     QToolBar* show = addToolBar("Show");
     show->setObjectName("show");
+    // The overlays, a check box each
     auto box = [&](const QString& label, const QString& tip, bool Overlays::*field) {
         auto* c = new QCheckBox(label, this);
         c->setToolTip(tip);
@@ -543,6 +556,7 @@ void MainWindow::buildToolbars() {
     hullAct_ = shown.value(1);
     frontierAct_ = shown.value(2);
     missesAct_ = shown.value(3);
+    // The heatmap in place of the image
     heatmapBox_ = new QComboBox(this);
     heatmapBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     heatmapBox_->addItem("image", int(Heatmap::None));
@@ -554,6 +568,7 @@ void MainWindow::buildToolbars() {
     show->addWidget(toolbarLabel("Show"));
     show->addWidget(heatmapBox_);
     connect(heatmapBox_, &QComboBox::activated, this, [this](int i) { setHeatmap(Heatmap(heatmapBox_->itemData(i).toInt())); });
+    // Fonts, presentation, the scene view, fit
     QAction* large = show->addAction("Large fonts");
     large->setCheckable(true);
     large->setToolTip("Bigger text for a projector");

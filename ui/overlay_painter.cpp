@@ -228,7 +228,7 @@ void OverlayPainter::paintSamples(QPainter& p, const rc::SessionState& s, const 
             if (auto l = clip(r.to, r.aim)) beyond << *l;
     }
     // Solid pens only (a dash pattern costs a stroke per dash). A pen wider than a pixel
-    // is stroked as a path and filled by the rasteriser: seconds for thousands of long
+    // is stroked as a path and filled by the rasteriser: slow for thousands of long
     // lines. So a large fan is drawn in hairlines (Qt's fast cosmetic stroker), a small
     // one with a dark halo under each line, one path each, so that it reads on any image
     int count = int(beyond.size());
@@ -334,11 +334,13 @@ void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double 
 
 void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
                                  const QRectF& area, const QRectF& image) {
+    // The caption: scene, cache and order, size, step; then the ray in focus
     QStringList caption;
     std::vector<std::pair<QColor, QString>> keys;
     const rc::RenderSession& session = s.session();
     for (const std::string& line : rc::focusCaption(s, sel)) caption << QString::fromStdString(line);
     const auto focus = rc::RayFocus::of(s, sel);
+    // The key: a line for each overlay shown
     if (o.hull || o.cylinder)
         keys.push_back({palette::kRay, focus && focus->selected ? "selected ray" : "ray being traced"});
     if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
@@ -356,6 +358,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
             keys.push_back({palette::kHull, "blocker hull: blocker cache only"});
         }
     }
+    // The breadth-first frontier
     if (o.frontier) {
         const rc::FrontierView f = session.order().frontier();
         if (f.path >= 0) {
@@ -369,6 +372,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
             keys.push_back({palette::kQueued, "frontier: breadth-first order only"});
         }
     }
+    // Miss marks, by reason
     if (o.misses) {
         // Counted over every path; the marks show the path of the ray being traced
         const rc::Counters& n = session.counters();
@@ -381,6 +385,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
                                 QString("miss: %1 (%2)").arg(QString::fromUtf8(rc::toString(rc::MissReason(r)).data()))
                                     .arg(n.missReasons[r])});
     }
+    // The sample rays of the pixel in focus
     if (o.samples && focus) {
         const rc::SampleFan& fan = s.fan(focus->pixel);
         const int eye = fan.count(rc::RayKind::Primary), shadow = fan.count(rc::RayKind::Shadow);
@@ -408,11 +413,13 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         const std::string cause = rc::missCauseText(s, *focus);
         if (!cause.empty()) keys.push_back({palette::kMissCause, QString::fromStdString(cause)});
     }
+    // The selection, and the pixel being traced
     caption << extraCaption_;
     if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
     if (const auto& last = s.recorder().lastEvent(); (sel.pixel >= 0 || sel.event >= 0) && last && !session.done())
         keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
 
+    // Fit the font to the view
     if (!o.legend || !keysShown_) keys.clear();
     // A caption and key taller than the view (beside the image), or than half of it (over
     // the image), get a smaller font rather than be cut off (untick Legend to hide the key)
@@ -425,6 +432,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         small.setPointSizeF(small.pointSizeF() * f);
         p.setFont(small);
     }
+    // Measure the caption and the key
     const QFontMetricsF fm(p.font());
     const double lh = fm.height() + 2;
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -483,6 +491,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     } else if (leftRoom >= kw + 32) {
         keyBox.moveTopLeft(QPointF(area.left() + 8, std::max(area.top() + 16, image.top()) + capBox.height()));
     }
+    // Draw the caption
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
     p.drawRoundedRect(capBox, 6, 6);
@@ -493,6 +502,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         p.drawText(QRectF(capBox.left() + 8, y, cw, h), Qt::AlignVCenter | Qt::AlignLeft | Qt::TextWordWrap, c);
         y += h;
     }
+    // Draw the key
     legendKey_ = QRectF();
     if (keys.empty() && !bar) return;
     legendKey_ = keyBox;
@@ -512,6 +522,7 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
                    text);
         y += h;
     }
+    // Draw the colour bar and its values
     if (!bar) return;
     p.setPen(Qt::white);
     p.drawText(QRectF(keyBox.left() + 8, y, kw - 16, titleHeight), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, barTitle);

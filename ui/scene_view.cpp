@@ -335,6 +335,7 @@ void SceneView::paintBodies(QPainter& p, const std::vector<bool>& blocker, int t
 }
 
 void SceneView::paintEvent(QPaintEvent*) {
+    // Frame the sketch; project spheres and hulls to the widget
     QPainter p(this);
     p.fillRect(rect(), QColor(28, 30, 36));
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -349,6 +350,7 @@ void SceneView::paintEvent(QPaintEvent*) {
     auto hull = [&](const rc::Sphere& a, const rc::Sphere& b) {
         return discHull(toWidget(a.c), a.r * scale_, toWidget(b.c), b.r * scale_);
     };
+    // Which objects the overlays mark: the potential blockers and the target
     std::vector<bool> blocker(k.bodies.size(), false);
     for (int id : k.hull.blockers) blocker[std::size_t(id)] = true;
     const int target = k.hull.valid() ? k.hull.targetObject : (k.focus ? k.focus->hit : -1);
@@ -405,7 +407,7 @@ void SceneView::paintEvent(QPaintEvent*) {
                                              : palette::kShadowBlocked;
         };
         // Solid pens (a dash pattern costs a stroke per dash); a large fan in hairlines and
-        // without halos, as in the image view: wide pens are filled as paths, seconds for thousands
+        // without halos, as in the image view: wide pens are filled as paths, slow for thousands
         const bool hairlines = int(k.fan.rays.size()) > rc::SampleFan::kHaloRays;
         if (!hairlines)
             for (const rc::FanRay& r : k.fan.rays) {

@@ -79,6 +79,7 @@ QString StatsPanel::summaryText() const { return text_->text(); }
 void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* other) {
     if (!state) return;
     const rc::RenderSession& s = state->session();
+    // The counts: rays, tests, searches, hits, misses
     const rc::Counters& n = s.counters();
     const double rays = std::max<double>(1.0, double(n.totalRays()));
     QString t = QString("<b>steps</b> %1 %2<br><b>rays</b> %3 (eye %4, shadow %5, reflection %6, refraction %7)<br>"
@@ -88,6 +89,7 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
                     .arg(n.totalRays()).arg(n.rays[0]).arg(n.rays[1]).arg(n.rays[2]).arg(n.rays[3])
                     .arg(n.intersectionTests).arg(double(n.intersectionTests) / rays, 0, 'f', 2)
                     .arg(n.completeSearches).arg(n.hits).arg(n.misses).arg(n.deferrals);
+    // What RayCache's caches and orders did beyond them
     QStringList reasons;
     for (int r = 1; r < rc::kMissReasons; ++r)
         if (n.missReasons[r]) reasons << QString("%1 %2").arg(text(rc::toString(rc::MissReason(r)))).arg(n.missReasons[r]);
@@ -163,6 +165,7 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
     h << QPointF(double(s.steps()), double(n.hits));
     m << QPointF(double(s.steps()), double(n.misses));
     te << QPointF(double(s.steps()), double(n.intersectionTests));
+    // The chart's series and axes
     hits_->replace(h);
     misses_->replace(m);
     tests_->replace(te);

@@ -43,6 +43,7 @@ ParallelRun replay(const std::shared_ptr<const Scene>& scene, const RenderOption
 }
 
 int bench(const BenchArgs& a) {
+    // The configurations: every search with no cache and with every cache in both orders
     std::vector<Config> configs;
     for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
         configs.push_back({accel, CacheKind::None, OrderKind::Scanline});
@@ -60,6 +61,7 @@ int bench(const BenchArgs& a) {
     std::ostringstream csv;
     csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree,ns_per_ray\n";
     for (const std::string& spec : a.scenes) {
+        // The scene, its size (1024 unless given), the configurations it runs
         auto scene = std::make_shared<const Scene>(loadScene(spec, a.flags.seed));
         RenderOptions base = a.flags.options();
         if (base.width <= 0) base.width = 1024;
@@ -94,6 +96,7 @@ int bench(const BenchArgs& a) {
             }
         }
         // [bench-interleave]
+        // The table: rays per second, each against Embree's
         double embreeRate = 0.0;
         for (std::size_t c = 0; c < run.size(); ++c)
             if (run[c].accel == AccelKind::Embree) embreeRate = double(counts[c].totalRays()) / median(times[c]);

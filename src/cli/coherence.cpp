@@ -6,10 +6,8 @@
 // plain tracer (no cache, scanline order).
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 #include <sstream>
-#include <unistd.h>
 
 #include "analysis/beam_tree.h"
 #include "analysis/median.h"
@@ -50,6 +48,7 @@ struct Measure {
 };
 
 int coherence(const CoherenceArgs& a) {
+    // The scene and the image size (96x96 unless given)
     auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
     RenderFlags flags = a.flags;
     if (flags.width <= 0 && flags.height <= 0) flags.width = flags.height = 96;
@@ -67,6 +66,7 @@ int coherence(const CoherenceArgs& a) {
             throw std::invalid_argument("--values " + std::to_string(v) + ": " + *e);
     }
 
+    // The CSV's header and the table's preamble
     std::ostringstream csv;
     csv << "sweep,value,rays,rays_per_pixel,beam_nodes,rays_per_beam,coherence,none_seconds,none_tests";
     for (CacheKind c : kCaches)
@@ -85,6 +85,7 @@ int coherence(const CoherenceArgs& a) {
     // The first value at which each configuration stops paying, in tests and in time
     std::map<std::string, std::pair<double, double>> stops;
     for (double v : values) {
+        // Render every configuration at this value
         RenderOptions base = flags.options();
         if (a.sweep == "light-radius") base.shading.sampling.lightRadius = v;
         else if (a.sweep == "gloss") base.shading.sampling.glossDegrees = v;
@@ -115,6 +116,7 @@ int coherence(const CoherenceArgs& a) {
                 m[k].seconds.push_back(threadSeconds() - start);
                 m[k].n = session.counters();
             }
+        // One row per configuration, against no cache in scanline order
         const double t0 = median(m[0].seconds);
         const double tests0 = double(m[0].n.intersectionTests);
         const double rays = double(m[0].n.totalRays());
@@ -145,6 +147,7 @@ int coherence(const CoherenceArgs& a) {
         csv << '\n';
         std::fflush(stdout);
     }
+    // Where each configuration stops paying
     std::printf("\nWhere each cache stops paying: the first %s at which it makes at least as many tests, or\n"
                 "takes at least as long, as no cache in scanline order (- : it pays at every value swept):\n\n",
                 a.sweep.c_str());
@@ -157,20 +160,10 @@ int coherence(const CoherenceArgs& a) {
         std::printf("  %-22s %10s %10s\n", name.c_str(), shown(tests).c_str(), shown(time).c_str());
     }
 
-    std::string csvPath = a.csv;
-    if (csvPath.empty() && !a.plot.empty())
-        csvPath = (std::filesystem::temp_directory_path() / ("raycache-coherence-" + std::to_string(getpid()) + ".csv")).string();
-    if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
-    if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
-    if (a.plot.empty()) return 0;
+    // The CSV and the chart
     const std::string title = scene->name + " at " + std::to_string(flags.width) + "x" + std::to_string(flags.height) +
                               ": the caches as " + a.sweep + " grows";
-    const int rc = drawChart("plot_coherence.py", csvPath, a.plot, title);
-    if (a.csv.empty() && rc != 1) std::filesystem::remove(csvPath);
-    if (rc == 1) return a.csv.empty() ? 1 : 0;
-    if (rc != 0) return 1;
-    std::printf("chart: %s\n", a.plot.c_str());
-    return 0;
+    return writeTableAndChart(csv.str(), a.csv, a.plot, "plot_coherence.py", title);
 }
 
 }  // namespace

@@ -6,10 +6,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "study/image_error.h"
 #include "render/parallel_render.h"
@@ -63,6 +61,7 @@ double meanOver(const std::vector<ProgressPoint>& pts, bool bySeconds) {
 // the RMSE against a reference of many more samples drawn with another seed
 int stochastic(const ConvergenceArgs& a) {
     if (a.spp > kMaxSpp) throw std::invalid_argument("--stochastic takes at most " + std::to_string(kMaxSpp) + " --spp");
+    // The scene, the image size (64x64 unless given), the sample counts
     auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
     RenderOptions base = a.flags.options();
     if (base.width <= 0 && base.height <= 0) base.width = base.height = 64;
@@ -71,6 +70,7 @@ int stochastic(const ConvergenceArgs& a) {
     std::vector<int> counts;
     for (int n = 1; n < a.spp; n *= 2) counts.push_back(n);
     counts.push_back(a.spp);
+    // The reference: many samples, a seed of its own
     RenderOptions ref = base;
     ref.cache = CacheKind::BlockerPlus;
     ref.shading.sampling.spp = a.refSpp;
@@ -81,6 +81,7 @@ int stochastic(const ConvergenceArgs& a) {
     const LinearImage reference = linearImage(renderParallel(scene, ref, 0).image);
     const double refSeconds = processSeconds() - refStart;
 
+    // Render every configuration at every sample count
     const Sampling& sm = base.shading.sampling;
     std::printf("%s at %dx%d, depth %d: distributed ray tracing (light radius %g with %d shadow samples, gloss %g "
                 "degrees with %d samples, seed %llu) at 1 to %d samples per pixel, against a reference of %d "
@@ -120,6 +121,7 @@ int stochastic(const ConvergenceArgs& a) {
                 << toString(kOrders[k % std::size(kOrders)]) << ',' << rays[i] << ',' << counts[i] << ','
                 << seconds[i][k] << ',' << error[i] << '\n';
     }
+    // The table: RMSE and seconds by sample count
     std::printf("%-22s", "spp");
     for (int n : counts) std::printf(" %8d", n);
     std::printf("\n%-22s", "RMSE");
@@ -141,20 +143,9 @@ int stochastic(const ConvergenceArgs& a) {
                     seconds[i][0] / seconds[i][std::size_t(best)]);
     }
     // [stochastic-convergence]
-    std::string csvPath = a.csv;
-    if (csvPath.empty() && !a.plot.empty())
-        csvPath = (std::filesystem::temp_directory_path() / ("raycache-stochastic-" + std::to_string(getpid()) + ".csv")).string();
-    if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
-    if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
-    if (a.plot.empty()) return 0;
     const std::string title = scene->name + " at " + std::to_string(base.width) + "x" + std::to_string(base.height) +
                               ": stochastic error against run time";
-    const int rc = drawChart("plot_stochastic.py", csvPath, a.plot, title);
-    if (a.csv.empty() && rc != 1) std::filesystem::remove(csvPath);
-    if (rc == 1) return a.csv.empty() ? 1 : 0;
-    if (rc != 0) return 1;
-    std::printf("chart: %s\n", a.plot.c_str());
-    return 0;
+    return writeTableAndChart(csv.str(), a.csv, a.plot, "plot_stochastic.py", title);
 }
 
 int convergence(const ConvergenceArgs& a) {
@@ -168,6 +159,7 @@ int convergence(const ConvergenceArgs& a) {
         base.width = m > 128 ? std::max(1, w * 128 / m) : w;
         base.height = m > 128 ? std::max(1, h * 128 / m) : h;
     }
+    // The final image every partial one is measured against
     RenderSession first(scene, base);
     first.run();
     base.width = first.width();
@@ -175,6 +167,7 @@ int convergence(const ConvergenceArgs& a) {
     const LinearImage final = linearImage(first.image());
     const std::int64_t total = first.steps();
 
+    // Progressive convergence: RMSE as each configuration's render proceeds
     std::ostringstream csv;
     csv << "kind,cache,order,steps,spp,seconds,rmse\n";
     std::printf("%s at %dx%d, depth %d, band %d: %lld rays.\n\nRMSE of the partial image against the final one "
@@ -240,6 +233,7 @@ int convergence(const ConvergenceArgs& a) {
             csv << "supersample," << toString(c) << ',' << toString(o) << ",0," << p.spp << ',' << p.seconds << ','
                 << p.rmse << '\n';
     }
+    // The table: RMSE and seconds by sample count
     std::printf("%-6s %8s", "spp", "RMSE");
     for (const std::string& n : names) std::printf(" %9.9s", n.c_str());
     std::printf("\n%-6s %8s", "", "");
@@ -251,20 +245,9 @@ int convergence(const ConvergenceArgs& a) {
         std::printf("\n");
     }
 
-    std::string csvPath = a.csv;
-    if (csvPath.empty() && !a.plot.empty())
-        csvPath = (std::filesystem::temp_directory_path() / ("raycache-convergence-" + std::to_string(getpid()) + ".csv")).string();
-    if (!csvPath.empty()) writeTextFile(csvPath, csv.str());
-    if (!a.csv.empty()) std::printf("\nCSV: %s\n", a.csv.c_str());
-    if (a.plot.empty()) return 0;
     const std::string title = scene->name + " at " + std::to_string(base.width) + "x" + std::to_string(base.height) +
                               ": error against run time";
-    const int rc = drawChart("plot_convergence.py", csvPath, a.plot, title);
-    if (a.csv.empty() && rc != 1) std::filesystem::remove(csvPath);
-    if (rc == 1) return a.csv.empty() ? 1 : 0;  // no matplotlib: the CSV has the numbers
-    if (rc != 0) return 1;
-    std::printf("chart: %s\n", a.plot.c_str());
-    return 0;
+    return writeTableAndChart(csv.str(), a.csv, a.plot, "plot_convergence.py", title);
 }
 
 }  // namespace

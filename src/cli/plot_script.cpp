@@ -3,6 +3,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <unistd.h>
+
+#include "render/output_files.h"
 
 namespace rc::cli {
 
@@ -46,6 +49,24 @@ int drawChart(const std::string& script, const std::string& csv, const std::stri
         std::fprintf(stderr, "raycache: drawing the chart failed\n");
         return 2;
     }
+    return 0;
+}
+
+int writeTableAndChart(const std::string& table, const std::string& csv, const std::string& plot,
+                       const std::string& script, const std::string& title) {
+    std::string csvPath = csv;
+    if (csvPath.empty() && !plot.empty()) {
+        const std::string name = std::filesystem::path(script).stem().string().substr(std::string("plot_").size());
+        csvPath = (std::filesystem::temp_directory_path() / ("raycache-" + name + "-" + std::to_string(getpid()) + ".csv")).string();
+    }
+    if (!csvPath.empty()) writeTextFile(csvPath, table);
+    if (!csv.empty()) std::printf("\nCSV: %s\n", csv.c_str());
+    if (plot.empty()) return 0;
+    const int rc = drawChart(script, csvPath, plot, title);
+    if (csv.empty() && rc != 1) std::filesystem::remove(csvPath);
+    if (rc == 1) return csv.empty() ? 1 : 0;  // no matplotlib: the CSV has the numbers
+    if (rc != 0) return 1;
+    std::printf("chart: %s\n", plot.c_str());
     return 0;
 }
 

@@ -46,6 +46,7 @@ int table1(const Table1Args& a) {
     RenderFlags flags = a.flags;
     if (flags.width == 0) flags.width = 256;
     if (flags.height == 0) flags.height = flags.width;
+    // The CSV's header and the table's preamble
     std::ostringstream csv;
     csv << "scene,cache,order,seconds,time_ratio,intersection_tests,tests_ratio,complete_searches,"
            "beam_nodes,searches_per_beam,paper_time_ratio,misses,besides_search_seconds,test_ns,"
@@ -60,6 +61,7 @@ int table1(const Table1Args& a) {
     if (specs.empty())
         for (int N : sizes_) specs.push_back("cube:" + std::to_string(N));
     for (const std::string& spec : specs) {
+        // Render every configuration, interleaved, timed on one processor
         auto scene = std::make_shared<const Scene>(loadScene(spec, flags.seed));
         const int N = spec.rfind("cube:", 0) == 0 ? std::atoi(spec.c_str() + 5) : 0;
         const int configs = int(std::size(kConfigs));
@@ -103,6 +105,7 @@ int table1(const Table1Args& a) {
                 counts[c] = session.counters();
             }
         }
+        // The table: each configuration against no cache, the paper's figure beside
         const double t0 = median(times[0]);
         const double tests0 = double(counts[0].intersectionTests);
         // [cost-model]

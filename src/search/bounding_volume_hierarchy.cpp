@@ -88,6 +88,7 @@ BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& id
         slo = glm::min(slo, s.c - Vec3(s.r));
         shi = glm::max(shi, s.c + Vec3(s.r));
     }
+    // The bounding sphere: around the spheres' box, as large as the farthest sphere needs
     Sphere bound{0.5 * (slo + shi), 0.0};
     for (int i = begin; i < end; ++i) {
         const Sphere& s = scene_.objects[ids[i]].bound;
@@ -141,6 +142,7 @@ BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& id
         split = begin + count / 2;  // every centroid in one place: halve the list
     }
     // [bvh-split]
+    // A leaf, or an inner node and its two children
     if (split < 0) {
         leaves_.push_back({begin, count});
         leafBounds_.push_back(bound);

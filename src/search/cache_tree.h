@@ -12,6 +12,7 @@
 
 #include "geometry/safety_cylinder.h"
 #include "search/query.h"
+#include "search/sample_entries.h"
 
 namespace rc {
 
@@ -43,22 +44,6 @@ struct CacheEntry {
     std::uint16_t tried = 0, spared = 0, asideFor = 0;
     /// Windows failed in a row: each doubles the rays stepped aside for (AsideBlockerCache)
     std::uint8_t failed = 0;
-};
-
-/// How the samples of distributed ray tracing (pixel samples, shadow-ray samples, glossy
-/// samples) share cache entries. Every sample always has a path of its own (orders and the
-/// beam tree need one ray per path and pixel); the choice is whether its path has an entry
-/// of its own.
-///
-/// In scanline and progressive order the samples of one pixel follow each other, and a
-/// shared entry answers sample k with what sample k - 1 found a moment before; an entry per
-/// sample last saw the neighbouring pixel's sample k. Breadth-first order fills one path at
-/// a time, so sample k's fill starts where sample k - 1's ended: the two choices come out
-/// alike. Shared is the default; `raycache coherence --sample-entries per-sample|shared`
-/// measures them.
-enum class SampleEntries : std::uint8_t {
-    PerSample,  ///< one entry per (path, sample index): sample k of a pixel meets sample k of its neighbour
-    Shared,     ///< the samples of a path share one entry: sample k meets sample k - 1 of the same pixel
 };
 
 /// The ray-tree paths met so far, each with its cache entry. Node 0 is the eye ray (of

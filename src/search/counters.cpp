@@ -4,16 +4,6 @@
 
 namespace rc {
 
-std::string_view toString(RayKind k) {
-    switch (k) {
-        case RayKind::Primary: return "primary";
-        case RayKind::Shadow: return "shadow";
-        case RayKind::Reflection: return "reflection";
-        case RayKind::Refraction: return "refraction";
-    }
-    return "?";
-}
-
 std::string_view toString(Decision d) {
     switch (d) {
         case Decision::Uncached: return "uncached";

@@ -5,12 +5,9 @@
 #include <cstdint>
 #include <string_view>
 
-namespace rc {
+#include "search/ray_kind.h"
 
-/// The kind of a ray, i.e. of a link in the ray tree.
-enum class RayKind : std::uint8_t { Primary, Shadow, Reflection, Refraction };
-inline constexpr int kRayKinds = 4;
-std::string_view toString(RayKind k);
+namespace rc {
 
 /// How a ray's nearest hit was found.
 enum class Decision : std::uint8_t {

@@ -46,6 +46,7 @@ void shade(const Scene& scene, const RayTask& task, const Answer& hit, const Sha
         return;
     }
     // [shade-leaves]
+    // The surface hit: its material, the point, the normal on the ray's side
     const Object& obj = scene.objects[hit.object];
     const Material& m = scene.materials[obj.material];
     const Vec3 p = q.ray.at(hit.t);
