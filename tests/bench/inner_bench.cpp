@@ -6,6 +6,14 @@
 #define CATCH_CONFIG_ENABLE_BENCHMARKING
 #include <catch2/catch.hpp>
 
+#include <malloc.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <unordered_map>
+#include <vector>
+
 
 #include <glm/geometric.hpp>
 
@@ -15,6 +23,9 @@
 #include "scene/builtin_scenes.h"
 #include "search/accelerator.h"
 #include "search/cache_strategy.h"
+#include "search/list_table.h"
+#include "view/block_vector.h"
+#include "view/event_record.h"
 #include "../uniform.h"
 
 using namespace rc;
@@ -88,5 +99,129 @@ TEST_CASE("complete search against a cached lookup", "[search]") {
         for (int i = 0; i < 256; ++i)
             hits += blocker->lookup({centre, kNoHit, {}, RayKind::Primary, -1}, entry, LookupMode::CheapOnly, n).known;
         return hits;
+    };
+}
+
+// The hand-written containers against the standard library's: the trace recorder's
+// BlockVector against std::deque and std::vector (appending a render's events, reading them
+// back, and the heap each holds), the blocker lists' ListTable against std::unordered_map.
+namespace {
+constexpr std::size_t kEvents = std::size_t(1) << 20;
+
+/// Heap bytes in use, mapped blocks included (glibc).
+std::size_t heapInUse() {
+    const struct mallinfo2 m = mallinfo2();
+    return m.uordblks + m.hblkhd;
+}
+
+/// The most heap a container holds while 1.5 x 2^20 events are appended to it (a count
+/// that is no power of two, as a render's is not).
+constexpr std::size_t kHeld = 3 * (std::size_t(1) << 19);
+template <class Container>
+std::size_t heldBytes() {
+    const std::size_t before = heapInUse();
+    std::size_t most = 0;
+    auto* c = new Container;
+    for (std::size_t i = 0; i < kHeld; ++i) {
+        c->push_back(EventRecord{});
+        if ((i & 1023) == 0 || i + 1 == kHeld) most = std::max(most, heapInUse() - before);
+    }
+    delete c;
+    return most;
+}
+}  // namespace
+
+TEST_CASE("containers: BlockVector against std::deque and std::vector", "[containers]") {
+    std::printf("most heap held while appending %zu events of %zu bytes: BlockVector %zu, std::deque %zu, std::vector %zu\n", kHeld,
+                sizeof(EventRecord), heldBytes<BlockVector<EventRecord>>(), heldBytes<std::deque<EventRecord>>(),
+                heldBytes<std::vector<EventRecord>>());
+    EventRecord e;
+    BENCHMARK("BlockVector: append 2^20 events") {
+        BlockVector<EventRecord> v;
+        for (std::size_t i = 0; i < kEvents; ++i) {
+            e.step = int(i);
+            v.push_back(e);
+        }
+        return v.size();
+    };
+    BENCHMARK("std::deque: append 2^20 events") {
+        std::deque<EventRecord> v;
+        for (std::size_t i = 0; i < kEvents; ++i) {
+            e.step = int(i);
+            v.push_back(e);
+        }
+        return v.size();
+    };
+    BENCHMARK("std::vector: append 2^20 events") {
+        std::vector<EventRecord> v;
+        for (std::size_t i = 0; i < kEvents; ++i) {
+            e.step = int(i);
+            v.push_back(e);
+        }
+        return v.size();
+    };
+    BlockVector<EventRecord> blocks;
+    std::deque<EventRecord> deque;
+    for (std::size_t i = 0; i < kEvents; ++i) {
+        e.step = int(i);
+        blocks.push_back(e);
+        deque.push_back(e);
+    }
+    // Random reads, as the GUI reads a pixel's events back
+    std::vector<std::size_t> at(4096);
+    Random rng(7);
+    for (std::size_t& i : at) i = std::size_t(rng() * double(kEvents));
+    BENCHMARK("BlockVector: 4096 random reads") {
+        std::int64_t s = 0;
+        for (std::size_t i : at) s += blocks[i].step;
+        return s;
+    };
+    BENCHMARK("std::deque: 4096 random reads") {
+        std::int64_t s = 0;
+        for (std::size_t i : at) s += deque[i].step;
+        return s;
+    };
+}
+
+TEST_CASE("containers: ListTable against std::unordered_map", "[containers]") {
+    // Keys as the blocker lists make them: a pair of sites packed in 64 bits
+    constexpr std::uint32_t kKeys = 1u << 16;
+    std::vector<std::uint64_t> keys(kKeys);
+    Random rng(11);
+    for (std::uint64_t& k : keys) k = (std::uint64_t(rng() * 1e5) << 32) | std::uint64_t(rng() * 1e5);
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    ListTable table;
+    std::unordered_map<std::uint64_t, std::uint32_t> map;
+    for (std::uint32_t i = 0; i < keys.size(); ++i) {
+        table.insert(keys[i], i);
+        map.emplace(keys[i], i);
+    }
+    // Lookups as rays make them: half of them kept, half not
+    std::vector<std::uint64_t> asked(1u << 16);
+    for (std::size_t i = 0; i < asked.size(); ++i)
+        asked[i] = i % 2 ? keys[std::size_t(rng() * double(keys.size()))] : (std::uint64_t(rng() * 1e5) << 32) | 100001u;
+    BENCHMARK("ListTable: 65536 finds") {
+        std::uint64_t s = 0;
+        for (std::uint64_t k : asked) s += table.find(k);
+        return s;
+    };
+    BENCHMARK("std::unordered_map: 65536 finds") {
+        std::uint64_t s = 0;
+        for (std::uint64_t k : asked) {
+            const auto it = map.find(k);
+            s += it == map.end() ? ListTable::kNone : it->second;
+        }
+        return s;
+    };
+    BENCHMARK("ListTable: insert 65536 keys") {
+        ListTable t;
+        for (std::uint32_t i = 0; i < keys.size(); ++i) t.insert(keys[i], i);
+        return t.find(keys[0]);
+    };
+    BENCHMARK("std::unordered_map: insert 65536 keys") {
+        std::unordered_map<std::uint64_t, std::uint32_t> m;
+        for (std::uint32_t i = 0; i < keys.size(); ++i) m.emplace(keys[i], i);
+        return m.size();
     };
 }
