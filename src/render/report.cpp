@@ -25,6 +25,7 @@ nlohmann::json countersJson(const Counters& n) {
                   {"verify_disagreements", n.verifyDisagreements},
                   {"cylinders_built", n.cylindersBuilt},
                   {"cylinders_ruled_out", n.cylindersRuledOut},
+                  {"cones_built", n.conesBuilt},
                   {"stepped_aside", n.steppedAside}};
     j["blocker_lists"] = {
         {"built", n.blockerListsBuilt},

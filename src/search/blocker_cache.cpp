@@ -21,7 +21,7 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
-      lists_(scene, search, plus_, plus_) {
+      lists_(scene, search, plus_, plus_), cylinders_(scene, search) {
     if (plus_) byOrigin_.assign(3 * (std::size_t(scene.size()) + 1), kNotKept);
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
@@ -154,7 +154,7 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Count
 Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) {
     // [blocker-empty]
     // The paper: rays that hit nothing keep the cylinder of safety
-    if (!plus_) return probeCylinder(q, e, n);
+    if (!plus_) return cylinders_.probe(q, e, n);
     // Blocker+dir: the ray's direction list answers it (no cylinder or cone to build; the
     // entry holds no object the ray could hit)
     if (directions_) return {false, {}, Decision::Miss, MissReason::TargetMissed};
@@ -169,10 +169,10 @@ Lookup BlockerCache::probeEmpty(const Query& q, CacheEntry& e, LookupMode mode, 
     // entry is used again; else the cylinder (if there is no cone, that very time)
     if (e.pending && cone) {
         buildCone(e, n);
-        if (e.coneAngle < 0.0) buildCylinder(e, n);
+        if (e.coneAngle < 0.0) cylinders_.build(e, n);
         e.pending = false;
     }
-    if (e.coneAngle < 0.0) return probeCylinder(q, e, n);
+    if (e.coneAngle < 0.0) return cylinders_.probe(q, e, n);
     // Inside the cone: angle(d, axis) < alpha, tested by sine and cosine, not by an angle
     ++n.coneTests;
     const double cosT = glm::dot(q.ray.d, e.coneAxis);
@@ -230,7 +230,7 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
     e.pending = false;
     if (q.kind != RayKind::Shadow && a.object < 0 && !directions_) {
         e.coneAxis = q.ray.d;
-        keepSegment(q, a, e);
+        cylinders_.keep(q, a, e);
     }
 }
 
@@ -280,7 +280,7 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     // [empty-cone]
     e.coneCos = pm::cos(e.coneAngle);
     e.coneSin = pm::sin(e.coneAngle) * (1.0 - 1e-12);
-    ++n.cylindersBuilt;
+    ++n.conesBuilt;
 }
 
 }  // namespace rc

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "search/cache_strategy.h"
+#include "search/cylinder_of_safety.h"
 #include "search/direction_lists.h"
 
 namespace rc {
@@ -76,6 +77,8 @@ private:
     bool plus_;
     bool directed_;  ///< blocker+dir
     BlockerLists lists_;
+    /// The paper: rays that hit nothing keep a cylinder of safety (blocker+: those from an object)
+    CylinderOfSafety cylinders_;
     /// Blocker+: the entry last used for rays of each (origin site, kind), 3 kinds (shadow
     /// rays keep no entry): its place in kept_, or kNotKept. Only origins met take room in
     /// kept_, so a scene of many objects sets up no entry before its first ray

@@ -96,20 +96,6 @@ protected:
     virtual void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) = 0;
     /// Why an entry cannot answer this query at all, or None when it may.
     static MissReason unusable(const Query& q, const CacheEntry& e);
-    /// The end of the segment a query covers: its hit, its light, or where it leaves
-    /// the scene's bounding sphere.
-    Vec3 segmentEnd(const Query& q, const Answer& a) const;
-    /// Keeps the segment of `q` ending at `a`; its cylinder is built when first needed.
-    void keepSegment(const Query& q, const Answer& a, CacheEntry& e) const;
-    /// Builds the cylinder of safety around the kept segment (e.cylinder.a to b).
-    void buildCylinder(CacheEntry& e, Counters& n) const;
-    /// Builds a pending cylinder for a new segment p-q that strays `need` from the kept
-    /// one, unless an object nearer than that shows it too narrow (e.cylinderBelow).
-    void buildCylinderFor(CacheEntry& e, double need, Counters& n) const;
-    /// Tests the cached object and the cylinder of safety, built (if pending) only when
-    /// the new segment could fit in it.
-    Lookup probeCylinder(const Query& q, CacheEntry& e, Counters& n) const;
-
     const Scene& scene_;
     const CompleteSearch& search_;
     double slack_;  ///< a few ulps of the scene's size: shrinks cylinders and cones

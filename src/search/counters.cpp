@@ -44,6 +44,7 @@ Counters& Counters::operator+=(const Counters& o) {
     blockerListMax = std::max(blockerListMax, o.blockerListMax);
     hullTests += o.hullTests;
     cylindersBuilt += o.cylindersBuilt;
+    conesBuilt += o.conesBuilt;
     cylindersRuledOut += o.cylindersRuledOut;
     steppedAside += o.steppedAside;
     directionSearches += o.directionSearches;

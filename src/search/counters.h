@@ -48,7 +48,8 @@ struct Counters {
     std::uint64_t blockerListEntries = 0;  ///< summed over built lists
     std::uint64_t blockerListMax = 0;
     std::uint64_t hullTests = 0;        ///< sphere-versus-hull tests made building lists
-    std::uint64_t cylindersBuilt = 0;   ///< safety cylinders (and empty cones) computed
+    std::uint64_t cylindersBuilt = 0;   ///< safety cylinders computed
+    std::uint64_t conesBuilt = 0;       ///< blocker+: empty cones of eye rays computed
     /// Rays that left a cylinder of safety before it was measured: an object nearer the kept
     /// segment than the ray strays was found (or already known), so it was not built for them
     std::uint64_t cylindersRuledOut = 0;

@@ -7,7 +7,7 @@ Lookup CylinderCache::lookup(const Query& q, CacheEntry& e, LookupMode mode, Cou
     MissReason why = unusable(q, e);
     if (why == MissReason::None) {
         // The cylinder is built the first time a ray may fit in it
-        const Lookup probe = probeCylinder(q, e, n);
+        const Lookup probe = cylinders_.probe(q, e, n);
         if (probe.known) return probe;
         why = probe.reason;
     }
@@ -21,7 +21,7 @@ void CylinderCache::reload(const Query& q, const Answer& a, CacheEntry& e, Count
     e.state = CacheEntry::State::Loaded;
     e.origin = q.origin;
     e.object = a.object;
-    keepSegment(q, a, e);
+    cylinders_.keep(q, a, e);
 }
 
 }  // namespace rc

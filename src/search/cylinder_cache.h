@@ -2,6 +2,7 @@
 /// \file
 /// \brief The Speer-DeRose-Barsky cache: the last object hit and a cylinder of safety.
 #include "search/cache_strategy.h"
+#include "search/cylinder_of_safety.h"
 
 namespace rc {
 
@@ -12,12 +13,16 @@ namespace rc {
 /// they leave the scene's bounding sphere.
 class CylinderCache final : public CacheStrategy {
 public:
-    using CacheStrategy::CacheStrategy;
+    CylinderCache(const Scene& scene, const CompleteSearch& search)
+        : CacheStrategy(scene, search), cylinders_(scene, search) {}
     CacheKind kind() const override { return CacheKind::Cylinder; }
     Lookup lookup(const Query& q, CacheEntry& e, LookupMode mode, Counters& n) override;
 
 protected:
     void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) override;
+
+private:
+    CylinderOfSafety cylinders_;
 };
 
 }  // namespace rc
