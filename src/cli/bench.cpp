@@ -1,5 +1,6 @@
-// `raycache bench`: rays per second of every complete search, with and without caches,
-// all configurations interleaved in one run so the ratios hold on a noisy machine.
+/// \file
+/// \brief `raycache bench`: rays per second of every complete search, with and without caches,
+/// all configurations interleaved in one run so the ratios hold on a noisy machine.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,9 +1,10 @@
-// `raycache coherence SCENE --sweep light-radius|gloss|spp`: the caches as rays spread.
-// "If rays were randomly chosen ... we would expect few cache hits" (Hanrahan 1986): for each
-// value of one distributed ray tracing parameter, every cache in every order renders the same
-// rays, and the table says how often each cache still answers, how many complete searches it
-// makes per ray and per beam, the beam tree's coherence, and its tests and time against the
-// plain tracer (no cache, scanline order).
+/// \file
+/// \brief `raycache coherence SCENE --sweep light-radius|gloss|spp`: the caches as rays spread.
+/// "If rays were randomly chosen ... we would expect few cache hits" (Hanrahan 1986): for each
+/// value of one distributed ray tracing parameter, every cache in every order renders the same
+/// rays, and the table says how often each cache still answers, how many complete searches it
+/// makes per ray and per beam, the beam tree's coherence, and its tests and time against the
+/// plain tracer (no cache, scanline order).
 #include <algorithm>
 #include <cstdio>
 #include <map>

@@ -1,6 +1,7 @@
 #pragma once
-// The subcommands of `raycache`. Each lives in a file of its own and registers itself
-// with an add...Command function that main() calls.
+/// \file
+/// \brief The subcommands of `raycache`. Each lives in a file of its own and registers itself
+/// with an add...Command function that main() calls.
 #include <cstdint>
 #include <functional>
 #include <string>

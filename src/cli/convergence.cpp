@@ -1,8 +1,9 @@
-// `raycache convergence SCENE`: error against run time. For every cache and order, the
-// RMSE of the partial image against the final one as rendering proceeds; and, with
-// jittered supersampling, the RMSE of 1, 2, 4, ... samples per pixel against a
-// high-sample reference, against the time they took. Writes the numbers as CSV and a
-// chart drawn by matplotlib (python3-matplotlib), when it is installed.
+/// \file
+/// \brief `raycache convergence SCENE`: error against run time. For every cache and order, the
+/// RMSE of the partial image against the final one as rendering proceeds; and, with
+/// jittered supersampling, the RMSE of 1, 2, 4, ... samples per pixel against a
+/// high-sample reference, against the time they took. Writes the numbers as CSV and a
+/// chart drawn by matplotlib (python3-matplotlib), when it is installed.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

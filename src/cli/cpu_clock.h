@@ -1,7 +1,8 @@
 #pragma once
-// The time one render takes, as the processor time of the thread that runs it: on a
-// machine shared with other work (a build, a second benchmark) the wall clock counts the
-// waits too, and the ratios of a table measured side by side drift with the load.
+/// \file
+/// \brief The time one render takes, as the processor time of the thread that runs it: on a
+/// machine shared with other work (a build, a second benchmark) the wall clock counts the
+/// waits too, and the ratios of a table measured side by side drift with the load.
 #include <ctime>
 
 #if defined(__linux__)

@@ -1,6 +1,7 @@
 #pragma once
-// The fingerprint of an image that `raycache render --hash` prints and the web edition's
-// page writes into #image-hash: the same hex digits mean the same pixels, byte for byte.
+/// \file
+/// \brief The fingerprint of an image that `raycache render --hash` prints and the web edition's
+/// page writes into #image-hash: the same hex digits mean the same pixels, byte for byte.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -1,5 +1,6 @@
-// raycache: the command-line tool. Renders scenes with any cache and order, reports what
-// each did, and reproduces the paper's Table 1.
+/// \file
+/// \brief raycache: the command-line tool. Renders scenes with any cache and order, reports what
+/// each did, and reproduces the paper's Table 1.
 #include <iostream>
 #include <new>
 

@@ -1,6 +1,7 @@
 #pragma once
-// Charts drawn by the matplotlib scripts in scripts/plot_*.py, found through the
-// environment's RAYCACHE_SCRIPTS_DIR or the folder CMake was configured with.
+/// \file
+/// \brief Charts drawn by the matplotlib scripts in scripts/plot_*.py, found through the
+/// environment's RAYCACHE_SCRIPTS_DIR or the folder CMake was configured with.
 #include <string>
 
 namespace rc::cli {

@@ -1,6 +1,7 @@
-// `raycache stability`: the stiff and extreme scene suite rendered with every cache and
-// order, checked for NaN, disagreements and precision; `--intersection` compares the
-// textbook and stable ray-sphere formulas in float and double against long double.
+/// \file
+/// \brief `raycache stability`: the stiff and extreme scene suite rendered with every cache and
+/// order, checked for NaN, disagreements and precision; `--intersection` compares the
+/// textbook and stable ray-sphere formulas in float and double against long double.
 #include <cstdio>
 #include <string>
 

@@ -1,5 +1,6 @@
-// `raycache table1`: the paper's Table 1, measured: every configuration interleaved in
-// one run, so the time ratios hold on a noisy machine.
+/// \file
+/// \brief `raycache table1`: the paper's Table 1, measured: every configuration interleaved in
+/// one run, so the time ratios hold on a noisy machine.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

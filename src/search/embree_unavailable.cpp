@@ -1,4 +1,5 @@
-// Built instead of embree_search.cpp when CMake does not find Embree.
+/// \file
+/// \brief Built instead of embree_search.cpp when CMake does not find Embree.
 #include <stdexcept>
 
 #include "search/embree_search.h"
