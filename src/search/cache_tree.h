@@ -10,41 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "geometry/safety_cylinder.h"
+#include "search/cache_entry.h"
 #include "search/query.h"
 #include "search/sample_entries.h"
 
 namespace rc {
-
-/// What a cache entry holds. The strategies use the fields they need: the cylinder
-/// cache the segment and its cylinder of safety; the blocker cache the object hit and
-/// (through BlockerLists) its potential blockers, a cylinder for rays that hit nothing,
-/// and an empty cone for eye rays that hit nothing.
-struct CacheEntry {
-    enum class State : std::uint8_t { Empty, Flushed, Loaded };
-    State state = State::Empty;
-    RayOrigin origin;          ///< the entry answers rays leaving this origin only
-    int object = -1;           ///< the object last hit, -1 for nothing
-    SafetyCylinder cylinder;   ///< around the last segment (radius < 0: none)
-    Vec3 coneAxis{0.0};        ///< empty cone around the last empty eye ray
-    double coneAngle = -1.0;   ///< its half-angle in radians (< 0: none)
-    double coneCos = 2.0;      ///< cos(coneAngle), for the test without trigonometry
-    double coneSin = 0.0;      ///< sin(coneAngle)
-    bool pending = false;      ///< cylinder or cone not built yet: built when the entry is next used
-    /// While the cylinder is pending: its radius, once measured, is known to be below this
-    double cylinderBelow = kNoHit;
-    /// The object that set the last cylinder's radius, or ruled it out (-1: none)
-    int nearObject = -1;
-    /// Blocker caches: the number of the list its last ray tested (BlockerLists::get)
-    std::uint32_t list = std::uint32_t(-1);
-    /// Blocker+dir: the number of the direction list its last miss tested (DirectionLists::get)
-    std::uint32_t directions = std::uint32_t(-1);
-    /// Blocker+ in front of a cheap search: lookups in the current window, and how many of
-    /// them were answered without a search; and how many rays are still to search at once
-    std::uint16_t tried = 0, spared = 0, asideFor = 0;
-    /// Windows failed in a row: each doubles the rays stepped aside for (AsideBlockerCache)
-    std::uint8_t failed = 0;
-};
 
 /// The ray-tree paths met so far, each with its cache entry. Node 0 is the eye ray (of
 /// pixel sample 0); with several pixel samples, sample s has a root path of its own.
