@@ -193,12 +193,12 @@ MainWindow::~MainWindow() {
 
 void MainWindow::keepLegendBeside(ImageView* view, const OverlayPainter& painter) {
     // The caption and key go beside the fitted image, never over it: the view keeps room
-    // for them, shrinking the image by at most a quarter of the view's width (a wider key
+    // for them, shrinking the image by at most a third of the view's width (a wider key
     // wraps its lines)
     const QSizeF image = view->image().size();
     const double fitted = image.isEmpty() ? 0.0 : image.width() * std::min(view->width() / image.width(), view->height() / image.height());
     const double room = std::max(0.0, view->width() - fitted);
-    const double want = std::min(painter.legendWidth(), std::max(room, 0.25 * view->width()));
+    const double want = std::min(painter.legendWidth(), std::max(room, view->width() / 3.0));
     if (std::abs(want - view->reserve()) > 8.0)
         QTimer::singleShot(0, view, [view, want] { view->setReserve(want); });
 }

@@ -463,9 +463,14 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     // Lines longer than the room beside the image (or the view) wrap
     const double leftRoom = image.left() - area.left(), rightRoom = area.right() - image.right();
     const double beside = std::max(leftRoom, rightRoom);
-    const double widest = (beside >= 0.3 * area.width() ? beside : area.width()) - 32;
+    // (the window keeps up to a third of a view beside its image: see MainWindow::keepLegendBeside)
+    const double widest = (beside >= 0.2 * area.width() ? beside : area.width()) - 32;
     cw = std::min(cw, widest);
+    // A colour bar too wide for the margin keeps the width its labels need, under the
+    // picture's corner; a key of lines wraps
+    const double barWidth = std::min(kw, area.width() - 32);
     kw = std::min(kw, widest);
+    if (bar && keys.empty() && rightRoom < barWidth + 32) kw = barWidth;
     auto height = [&](const QString& text, double width) {
         return std::max(lh, fm.boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, text).height() + 2);
     };
@@ -475,11 +480,27 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     const double titleHeight = bar ? height(barTitle, kw - 16) : 0.0;
     const double barHeight = bar ? lh * 2.2 + titleHeight : 0.0;
     keyHeight += barHeight;
+    // A caption whose wrapped lines run past the view, or a caption and key that the margin
+    // would hold one above the other but for their height: once more, in a font that fits
+    const double capRoom = area.bottom() - std::max(area.top() + 8, image.top()) - 8;
+    const double need = rightRoom >= kw + 32 && rightRoom >= cw + 32 ? capHeight + 8 + keyHeight : capHeight;
+    if (need > capRoom && !refitting_) {
+        QFont smaller = p.font();
+        smaller.setPointSizeF(smaller.pointSizeF() * std::max(0.6, 0.95 * capRoom / need));
+        p.save();
+        p.setFont(smaller);
+        refitting_ = true;
+        paintLegend(p, s, o, sel, area, image);
+        refitting_ = false;
+        p.restore();
+        return;
+    }
     // Beside the image when a margin has room, else over it (caption top left, key bottom left)
     QRectF capBox(area.left() + 8, area.top() + 8, cw + 16, capHeight);
     QRectF keyBox(area.left() + 8, area.bottom() - 8 - keyHeight, kw + 16, keyHeight);
+    const QPointF besideTop(image.right() + 8, std::max(area.top() + 8, image.top()));
     if (rightRoom >= kw + 32) {
-        keyBox.moveTopLeft(QPointF(image.right() + 8, std::max(area.top() + 8, image.top())));
+        keyBox.moveTopLeft(besideTop);
         if (rightRoom >= cw + 32 && keyBox.bottom() + capBox.height() + 8 < area.bottom()) {
             capBox.moveTopLeft(keyBox.topLeft());
             keyBox.moveTop(capBox.bottom() + 8);
@@ -488,6 +509,9 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
             capBox.moveTopLeft(keyBox.topLeft());
             keyBox.moveTopLeft(QPointF(area.left() + 8, area.bottom() - 8 - keyHeight));
         }
+    } else if (rightRoom >= cw + 32 && keys.empty()) {
+        // A colour bar wider than the margin: the caption beside, the bar under the corner
+        capBox.moveTopLeft(besideTop);
     } else if (leftRoom >= kw + 32) {
         keyBox.moveTopLeft(QPointF(area.left() + 8, std::max(area.top() + 16, image.top()) + capBox.height()));
     }

@@ -89,6 +89,7 @@ private:
     QRectF legendKey_;
     double legendWidth_ = 0.0;
     double lineScale_ = 1.0;
+    bool refitting_ = false;  ///< paintLegend() is painting again in a smaller font
     std::size_t eventBudget_ = 0;
     std::function<void()> more_;
     bool pending_ = false;

@@ -323,7 +323,10 @@ TEST_CASE("The miss overlay marks misses in their reason's colour", "[gui][overl
         }
     }
     REQUIRE(pixel >= 0);
-    f.w.imageView()->setZoom(8.0, QPointF(0, 0) - 8.0 * QPointF(pixel % f.state().width(), pixel / f.state().width()) + QPointF(500, 400));
+    // The pixel in the middle of what the view shows (out of the strip it keeps for the key)
+    const ImageView& view = *f.w.imageView();
+    const QPointF middle((view.width() - view.reserve()) / 2.0, view.height() / 2.0);
+    f.w.imageView()->setZoom(8.0, QPointF(0, 0) - 8.0 * QPointF(pixel % f.state().width(), pixel / f.state().width()) + middle);
     f.w.setOverlays(only(nullptr));
     const QImage plain = f.grabView();
     f.w.setOverlays(only(&Overlays::misses));
