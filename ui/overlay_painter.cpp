@@ -483,7 +483,10 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     // A caption whose wrapped lines run past the view, or a caption and key that the margin
     // would hold one above the other but for their height: once more, in a font that fits
     const double capRoom = area.bottom() - std::max(area.top() + 8, image.top()) - 8;
-    const double need = rightRoom >= kw + 32 && rightRoom >= cw + 32 ? capHeight + 8 + keyHeight : capHeight;
+    // (one above the other only at three quarters of the font or more: smaller, the caption
+    // goes over the picture's corner, legible from the back of the room)
+    const bool stack = rightRoom >= kw + 32 && rightRoom >= cw + 32 && capRoom / (capHeight + 8 + keyHeight) >= 0.75 / 0.95;
+    const double need = stack ? capHeight + 8 + keyHeight : capHeight;
     if (need > capRoom && !refitting_) {
         QFont smaller = p.font();
         smaller.setPointSizeF(smaller.pointSizeF() * std::max(0.6, 0.95 * capRoom / need));
