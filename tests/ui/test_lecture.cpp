@@ -50,6 +50,15 @@ std::vector<GuiOptions> stopsOf(const rc::Tour& tour) {
     return stops;
 }
 
+/// A render of the built-in `pair` with blocker lists, `size` pixels square.
+rc::SessionState pairState(rc::OrderKind order, int size) {
+    rc::RenderOptions ro;
+    ro.cache = rc::CacheKind::Blocker;
+    ro.order = order;
+    ro.width = ro.height = size;
+    return rc::SessionState({std::make_shared<const rc::Scene>(rc::loadScene("pair")), ro});
+}
+
 /// The window's action with shortcut `key`.
 QAction* actionFor(MainWindow& w, const QKeySequence& key) {
     for (QAction* a : w.findChildren<QAction*>())
@@ -314,11 +323,7 @@ TEST_CASE("The frame log (--frame-log) writes one line per UI-thread task, first
 }
 
 TEST_CASE("The event log holds the newest rays of a long render, a bounded number of rows", "[gui][stall]") {
-    rc::RenderOptions ro;
-    ro.cache = rc::CacheKind::Blocker;
-    ro.order = rc::OrderKind::Scanline;
-    ro.width = ro.height = 256;
-    rc::SessionState s({std::make_shared<const rc::Scene>(rc::loadScene("pair")), ro});
+    rc::SessionState s = pairState(rc::OrderKind::Scanline, 256);
     EventLogModel model;
     // Grown a step at a time, as a live window refreshes
     for (std::int64_t step : {20000, 60000, 90000}) {
@@ -347,11 +352,7 @@ TEST_CASE("The event log holds the newest rays of a long render, a bounded numbe
 }
 
 TEST_CASE("The misses and region layers read a long log over several paints", "[gui][stall]") {
-    rc::RenderOptions ro;
-    ro.cache = rc::CacheKind::Blocker;
-    ro.order = rc::OrderKind::BreadthFirst;
-    ro.width = ro.height = 64;
-    rc::SessionState s({std::make_shared<const rc::Scene>(rc::loadScene("pair")), ro});
+    rc::SessionState s = pairState(rc::OrderKind::BreadthFirst, 64);
     REQUIRE(s.runUntil(rc::RunGoal::ToStep, 6000));
     const std::size_t events = s.recorder().events().size();
     const std::size_t budget = 1000;
