@@ -198,7 +198,9 @@ void MainWindow::keepLegendBeside(ImageView* view, const OverlayPainter& painter
     const QSizeF image = view->image().size();
     const double fitted = image.isEmpty() ? 0.0 : image.width() * std::min(view->width() / image.width(), view->height() / image.height());
     const double room = std::max(0.0, view->width() - fitted);
-    const double want = std::min(painter.legendWidth(), std::max(room, view->width() / 3.0));
+    double want = std::min(painter.legendWidth(), std::max(room, view->width() / 3.0));
+    // Too narrow to wrap into: the key goes over the picture, which keeps the whole view
+    if (want < painter.legendMinBeside()) want = 0.0;
     if (std::abs(want - view->reserve()) > 8.0)
         QTimer::singleShot(0, view, [view, want] { view->setReserve(want); });
 }

@@ -464,7 +464,9 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     const double leftRoom = image.left() - area.left(), rightRoom = area.right() - image.right();
     const double beside = std::max(leftRoom, rightRoom);
     // (the window keeps up to a third of a view beside its image: see MainWindow::keepLegendBeside)
-    const double widest = (beside >= 0.2 * area.width() ? beside : area.width()) - 32;
+    // (and a margin narrower than a few words is not used: lines of one word would not read)
+    minBeside_ = 7.0 * lh + 32;
+    const double widest = (beside >= 0.2 * area.width() && beside >= minBeside_ ? beside : area.width()) - 32;
     cw = std::min(cw, widest);
     // A colour bar too wide for the margin keeps the width its labels need, under the
     // picture's corner; a key of lines wraps

@@ -57,6 +57,9 @@ public:
     const QRectF& legendKey() const { return legendKey_; }
     /// The width the last caption and key wanted beside the image (widget pixels).
     double legendWidth() const { return legendWidth_; }
+    /// The narrowest margin the caption and key wrap into (widget pixels): narrower, they
+    /// go over the picture's corners.
+    double legendMinBeside() const { return minBeside_; }
     /// Events a paint reads into the per-pixel layers at most (0: all): a long log is
     /// read over several paints, so that no paint stalls the window. `more` is called
     /// when a paint left events unread, to ask for the next one.
@@ -89,6 +92,7 @@ private:
     QRectF legendKey_;
     double legendWidth_ = 0.0;
     double lineScale_ = 1.0;
+    double minBeside_ = 0.0;
     bool refitting_ = false;  ///< paintLegend() is painting again in a smaller font
     std::size_t eventBudget_ = 0;
     std::function<void()> more_;
