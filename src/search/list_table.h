@@ -2,7 +2,7 @@
 /// \file
 /// \brief The index of a log of lists: which list, by number, a key has.
 ///
-/// Kept over std::unordered_map: 65,536 finds 0.64 ms against 1.64, inserts 2.6x as fast (raycache_microbench "[containers]").
+/// Kept over std::unordered_map: faster finds and inserts, as raycache_microbench "[containers]" measures side by side.
 #include <cstdint>
 #include <vector>
 
