@@ -32,6 +32,9 @@ const std::map<int, std::pair<double, double>> kPaper{{3, {0.53, 0.25}}, {4, {0.
 }  // namespace
 
 namespace {
+// The size table1 renders at unless told otherwise: the docs' Table 1 page's
+constexpr int kTable1Size = 512;
+
 struct Table1Args {
     std::vector<int> sizes{3, 4, 5};
     std::vector<std::string> scenes;  ///< instead of cube:N
@@ -45,7 +48,7 @@ int table1(const Table1Args& a) {
     const int repeat_ = a.repeat;
     const std::string& csv_ = a.csv;
     RenderFlags flags = a.flags;
-    if (flags.width == 0) flags.width = 256;
+    if (flags.width == 0) flags.width = flags.height == 0 ? kTable1Size : flags.height;
     if (flags.height == 0) flags.height = flags.width;
     // The CSV's header and the table's preamble
     std::ostringstream csv;
@@ -164,6 +167,10 @@ void addTable1Command(CLI::App& app, Commands& out) {
         ->delimiter(',');
     c->add_option("--csv", a->csv, "also write the table as CSV")->check(outputFile());
     a->flags.addTo(c, false);
+    // Every scene renders at one size here, not the scene's own
+    c->get_option("--width")->description("image width (default: " + std::to_string(kTable1Size) +
+                                          ", or --height; every scene, cube:N or not)");
+    c->get_option("--height")->description("image height (default: the width)");
     out.push_back({c, [a] { return table1(*a); }});
 }
 
