@@ -22,7 +22,6 @@ import tempfile
 # name: the scene and the options of `raycache render`
 RUNS = {
     # The paper's blocker cache on cube:4 at 512 by 512 (blocker_lists, table1, safety_cylinder)
-    "cube4_none": "cube:4 --cache none --width 512 --height 512",
     "cube4_blocker_scanline": "cube:4 --cache blocker --order scanline --width 512 --height 512",
     "cube4_blocker_bfs": "cube:4 --cache blocker --order bfs --width 512 --height 512",
     "cube4_cylinder_scanline": "cube:4 --cache cylinder --order scanline --width 512 --height 512",
@@ -38,9 +37,6 @@ RUNS = {
     "cube8_blocker_bfs_band1": "cube:8 --cache blocker --order bfs --band 1 --width 512 --height 512",
     "cube8_blocker_bfs_band16": "cube:8 --cache blocker --order bfs --band 16 --width 512 --height 512",
     "cube8_none": "cube:8 --cache none --width 512 --height 512",
-    "cube5_blocker_scanline": "cube:5 --cache blocker --order scanline --width 512 --height 512",
-    "cube5_blocker_bfs": "cube:5 --cache blocker --order bfs --width 512 --height 512",
-    "cube5_none": "cube:5 --cache none --width 512 --height 512",
     # RayCache and the paper: the paper's cache against blocker+ and blocker+dir, tiles,
     # stepping aside, the banded progressive order
     "cube4_blockerplus_bfs": "cube:4 --cache blocker+ --order bfs --width 512 --height 512",

@@ -19,10 +19,10 @@ import sys
 
 COUNTED = (r"(?:tests?|rays?|misses|miss|searches|search|lists?|cylinders?|cones?|regions?|deferrals?|"
            r"beams?|nodes|hits?|instructions|spheres? each|times? as many)")
+UNIT = r"(?:%|x\b|×|million|thousand|G\b|ns\b|ms\b|s\b|MB\b|KB\b|times\b)"
 FIGURE = re.compile(
     r"(?<![\w.@:#/-])(?P<num>\d{1,3}(?:,\d{3})+(?:\.\d+)?|\d*\.\d+|\d+)"
-    r"(?P<after>\s*(?:%|x\b|×|(?:-\d+(?:\.\d+)?)?\s*(?:%|million|thousand|G\b|ns\b|ms\b|s\b|MB\b|KB\b|times\b)|"
-    r"\s+" + COUNTED + r"\b)?)")
+    r"(?P<after>(?:-\d+(?:\.\d+)?)?\s*" + UNIT + r"|\s+" + COUNTED + r"\b)?")
 
 
 def blank(m):
