@@ -141,7 +141,7 @@ if searches:
             if (r["cache"], r["order"]) == ("blocker", "bfs") and num(r["beam_nodes"]):
                 rule.append((scene, num(r["searches_per_beam"]), num(r["misses"]) / num(r["beam_nodes"])))
     if rule:
-        md.append("<div style=\"margin-top: 1em\"><b>The paper's cache under the paper's rule</b>: \"Each cache miss "
+        md.append("<div style=\"margin-top: 1em\"><b>The blocker cache under the paper's rule</b>: \"Each cache miss "
                   "causes all the objects to be searched\". RayCache answers some misses from a list without a "
                   "complete search (\\ref paper_and_raycache); counted the paper's way, every miss a complete search, "
                   "<tt>blocker, bfs</tt> makes " +
@@ -162,7 +162,7 @@ for cache, order, paper in (("blocker", "scanline", ".53, .29, .20"), ("blocker"
     times = [t for _, t, _ in ts]
     tests = [k for _, _, k in ts]
     trend.append(f"<tt>{cache}, {order}</tt>: its time {way(times)} with N (" +
-                 ", ".join(f"{t:.2f}" for t in times) + f"; the paper's {paper}), its tests {way(tests)} (" +
+                 ", ".join(f"{t:.2f}" for t in times) + f"; the paper's {paper}), its tests ratio {way(tests)} (" +
                  ", ".join(f"{k:.3f}" for k in tests) + ")")
 if trend:
     md.append("<div style=\"margin-top: 1em\"><b>The trend with N</b> (" + ", ".join(scenes) + "), relative to no "
