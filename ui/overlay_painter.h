@@ -85,6 +85,7 @@ public:
 
 private:
     PaintWork work_;
+    std::vector<rc::OverlayShape> drawn_;  ///< the shapes of the ray in focus the last paint() drew
     Heatmap heatmap_ = Heatmap::None;
     double heatTop_ = 0.0, lastTop_ = 0.0;
     QStringList extraCaption_;
