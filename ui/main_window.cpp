@@ -28,6 +28,7 @@
 
 #include "order/order_registry.h"
 #include "search/search_registry.h"
+#include "view/compare_caption.h"
 #include "view/scene_list.h"
 #include "cache_tree_panel.h"
 #include "event_log_panel.h"
@@ -355,12 +356,8 @@ void MainWindow::refreshCompare() {
     overlayPainter_.setHeatmap(heatmap_, top);
     QStringList extra;
     if (s) {
-        const double a = double(s->session().counters().intersectionTests);
-        const double b = double(c->session().counters().intersectionTests);
-        extra << QString("tests %1 = %2x the left's %3").arg(b, 0, 'f', 0).arg(a > 0 ? b / a : 0.0, 0, 'f', 2).arg(a, 0, 'f', 0)
-              << QString("difference %1%2 tests").arg(b >= a ? "+" : "").arg(b - a, 0, 'f', 0);
-        if (s->session().steps() != c->session().steps())
-            extra << QString("catching up: step %1 of %2").arg(c->session().steps()).arg(s->session().steps());
+        // The core's lines (rc::compareCaption), as the page's
+        for (const std::string& line : rc::compareCaption(*s, *c)) extra << QString::fromStdString(line);
         stats_->refresh(s, c);
     }
     comparePainter_.setExtraCaption(extra);

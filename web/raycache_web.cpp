@@ -24,6 +24,7 @@
 #include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 #include "view/session_state.h"
+#include "view/compare_caption.h"
 #include "view/legend.h"
 #include "view/palette.h"
 #include "view/registry_listing.h"
@@ -345,6 +346,12 @@ public:
         for (const std::string& line : state_->scene().skipped) out += line + "\n";
         return out;
     }
+    /// The caption of `right` compared with this render (rc::compareCaption), a line each.
+    std::string compareCaption(const WebRender& right) const {
+        std::string out;
+        for (const std::string& line : rc::compareCaption(*state_, *right.state_)) out += line + "\n";
+        return out;
+    }
     /// The pixel of the ray being traced (-1: none yet).
     int focusPixel() const {
         const auto& e = state_->recorder().lastEvent();
@@ -424,6 +431,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("shapes", &WebRender::shapes)
         .function("legend", &WebRender::legend)
         .function("keys", &WebRender::keys)
+        .function("compareCaption", &WebRender::compareCaption)
         .function("statistics", &WebRender::statistics)
         .function("caption", &WebRender::caption)
         .function("warnings", &WebRender::warnings)

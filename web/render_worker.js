@@ -51,6 +51,7 @@ function renderWorkerMain(self, RayCache) {
     syncCompare();
     const first = picture(render, buffers);
     const second = compare ? picture(compare, buffers) : null;
+    if (second) second.compareCaption = render.compareCaption(compare);
     self.postMessage(Object.assign({ type: 'frame' }, first, {
       compare: second, progress: render.progress(), running,
     }, extra || {}), buffers);

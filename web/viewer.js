@@ -392,10 +392,9 @@
   function captionOf(m) {
     let text = m.caption.trim();
     if (m.compare) {
-      const a = m.statistics.tests, b = m.compare.statistics.tests;
-      text = 'left: ' + text + '\nright: ' + m.compare.caption.trim() +
-        '\ntests ' + b + ' = ' + (a > 0 ? (b / a).toFixed(2) : '0.00') + 'x the left\'s ' + a +
-        ', difference ' + (b >= a ? '+' : '') + (b - a) + ' tests';
+      // The comparison's lines are the core's (rc::compareCaption), as the Qt GUI's
+      text = 'left: ' + text + '\nright: ' + m.compare.caption.trim() + '\n' +
+        m.compare.compareCaption.trim().split('\n').join(', ');
     }
     return text;
   }
