@@ -340,9 +340,11 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     const auto focus = rc::RayFocus::of(s, sel);
     // The key: the core's entries (rc::legendEntries, as the page's), for the shapes drawn
     const rc::LegendShown shown{o.cylinder, o.hull, o.frontier, o.misses};
-    const auto addKeys = [&keys](const std::vector<rc::LegendEntry>& entries) {
+    coreKeys_.clear();
+    const auto addKeys = [&keys, this](const std::vector<rc::LegendEntry>& entries) {
         for (const rc::LegendEntry& e : entries)
             keys.push_back({e.colour ? palette::qt(*e.colour) : QColor(Qt::transparent), QString::fromStdString(e.text)});
+        coreKeys_.insert(coreKeys_.end(), entries.begin(), entries.end());
     };
     addKeys(rc::legendEntries(s, sel, shown, drawn_));
     // The sample rays of the pixel in focus

@@ -207,7 +207,7 @@ public:
             if (reason == toString(MissReason(r))) filter = MissReason(r);
         state_->setMissFilter(filter);
         const bool met = state_->runUntil(goal == "miss" ? RunGoal::NextMiss : RunGoal::NextPixel, 0);
-        if (state_->stopEvent() >= 0) selection_.event = state_->stopEvent();
+        if (state_->stopEvent() >= 0) selectEvent(state_->stopEvent());
         return met && !(goal == "miss" && state_->stopEvent() < 0);
     }
     /// Puts pixel (x, y)'s ray at `path` in focus (its eye ray when `path` is empty);
@@ -227,10 +227,16 @@ public:
     /// stop that shows the scene view without choosing a ray. False when none is traced.
     bool showcase() {
         selection_ = {};
-        selection_.event = showcaseEvent(*state_);
-        return selection_.event >= 0;
+        const int e = showcaseEvent(*state_);
+        if (e >= 0) selectEvent(e);
+        return e >= 0;
     }
     void clearSelection() { selection_ = {}; }
+    /// Puts event `e` in focus and selects its pixel, as the Qt GUI does for a stop's ray.
+    void selectEvent(int e) {
+        selection_.event = e;
+        if (const auto f = RayFocus::ofEvent(*state_, e)) selection_.pixel = f->pixel;
+    }
     int selectedPixel() const { return selection_.pixel; }
 
     /// The 8-bit RGB image, rows top to bottom (a view into memory the next call may move).
