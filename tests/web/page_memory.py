@@ -6,7 +6,7 @@ headless to a screenshot (its peak resident memory, /usr/bin/time's). Prints the
 measurement, not a test.
 
 Usage: page_memory.py --page build/web-edition/web/index.html --gui build/ui/raycache-gui
-           [--scene cube:4 --sizes 1024,2048 --cache blocker+ --order bfs]"""
+           [--cli build/src/raycache] [--scene cube:4 --sizes 1024,2048 --cache blocker+ --order bfs]"""
 import argparse
 import os
 import pathlib
@@ -21,28 +21,20 @@ from browser import Browser  # noqa: E402
 HASH = "document.getElementById('image-hash').textContent"
 
 
-def descendants(pid):
-    out, todo = [], [pid]
-    while todo:
-        p = todo.pop()
-        try:
-            children = pathlib.Path(f"/proc/{p}/task/{p}/children").read_text().split()
-        except OSError:
-            children = []
-        out += [int(c) for c in children]
-        todo += [int(c) for c in children]
-    return out
-
-
 def renderer_rss_mb(browser):
+    """The resident memory of this browser's renderer processes (found by its profile folder:
+    Chromium starts them through its zygote, not as the browser's own children)."""
     total = 0
-    for pid in descendants(browser.process.pid):
+    profile = ("--user-data-dir=" + browser.profile.name).encode()
+    for entry in pathlib.Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
         try:
-            cmd = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes().split(b"\0")
-            status = pathlib.Path(f"/proc/{pid}/status").read_text()
+            cmd = (entry / "cmdline").read_bytes()  # Chromium rewrites it: arguments may be joined by spaces
+            status = (entry / "status").read_text()
         except OSError:
             continue
-        if b"--type=renderer" in cmd:
+        if b"--type=renderer" in cmd and profile in cmd:
             total += int(re.search(r"VmRSS:\s+(\d+) kB", status).group(1))
     return total / 1024
 
@@ -70,10 +62,19 @@ def native(a, size):
         return int(m.group(1)) / 1024 if m else None
 
 
+def cli_rss_mb(a, size):
+    """`raycache render`'s peak resident memory for the same render (no viewer's records)."""
+    r = subprocess.run(["/usr/bin/time", "-v", a.cli, "render", a.scene, "--width", str(size), "--height", str(size),
+                        "--cache", a.cache, "--order", a.order, "-q", "--hash"], capture_output=True, text=True)
+    m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", r.stderr)
+    return int(m.group(1)) / 1024 if m else None
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--page", required=True)
     p.add_argument("--gui", required=True)
+    p.add_argument("--cli", help="also raycache render's peak resident memory")
     p.add_argument("--chromium", default="chromium")
     p.add_argument("--scene", default="cube:4")
     p.add_argument("--sizes", default="1024,2048")
@@ -84,8 +85,10 @@ def main():
     for size in [int(s) for s in a.sizes.split(",")]:
         web, nat = page(a, size), native(a, size)
         ratio = f"{web / nat:.1f}x" if web and nat else "-"
+        cli = f", raycache render {round(cli_rss_mb(a, size))} MB" if a.cli else ""
         print(f"{a.scene} {size}x{size} {a.cache} {a.order}: page {web and round(web)} MB (renderer processes' "
-              f"resident memory after the run), native GUI {nat and round(nat)} MB (peak resident), page/native {ratio}")
+              f"resident memory after the run), native GUI {nat and round(nat)} MB (peak resident), "
+              f"page/GUI {ratio}{cli}")
     return 0
 
 
