@@ -217,7 +217,6 @@ const Bad kMalformed[] = {
     {"negative_radius",          8,  9, "sphere radius must be positive, found '-1'"},
     {"zero_radius",              8,  9, "sphere radius must be positive, found '0'"},
     {"polygon_two_vertices",     8,  3, "a polygon needs at least 3 vertices, found '2'"},
-    {"polygon_degenerate",       8,  1, "degenerate polygon"},
     {"polygon_nonplanar",        8,  1, "polygon is not planar"},
     {"polygon_self_intersecting", 8, 1, "polygon crosses itself"},
     {"polygon_huge_count",       8,  3, "polygon vertex count '4000000000' exceeds the limit of 10000"},

@@ -5,6 +5,9 @@
 #include <QCommandLineParser>
 
 #include "labels.h"
+#include "order/order_registry.h"
+#include "scene/nff_reader.h"
+#include "search/search_registry.h"
 
 namespace rcgui {
 
@@ -28,6 +31,20 @@ QStringList cacheNames() {
     for (rc::CacheKind k : rc::allCacheKinds()) out << text(rc::toString(k));
     return out;
 }
+/// Every order's name (rc::orderRegistry)
+QStringList orderNames() {
+    QStringList out;
+    for (const std::string& n : rc::orderRegistry().names()) out << text(n);
+    return out;
+}
+/// Every exact complete search's name (rc::searchRegistry; not Embree's, for comparison only)
+QStringList searchNames() {
+    QStringList out;
+    for (const rc::SearchInfo& s : rc::searchRegistry().entries())
+        if (!s.comparisonOnly) out << text(s.name);
+    return out;
+}
+constexpr int kMaxSize = int(rc::NffLimits::maxResolution);
 /// Every miss reason's name (rc::MissReason from Cold on)
 QStringList missReasonNames() {
     QStringList out;
@@ -47,7 +64,7 @@ std::optional<CompareChoice> parseCompare(const QString& spec, QString& error) {
     const auto order = parts.size() == 2 ? rc::parseOrderKind(parts[1].toStdString()) : std::nullopt;
     if (parts.size() != 2 || !cache || !order) {
         error = "--compare must be CACHE:ORDER, with CACHE " + oneOf(cacheNames()) +
-                " and ORDER scanline, progressive or bfs (e.g. none:scanline), not '" + spec + "'";
+                " and ORDER " + oneOf(orderNames()) + " (e.g. none:scanline), not '" + spec + "'";
         return std::nullopt;
     }
     return CompareChoice{*cache, *order};
@@ -89,7 +106,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     p.addPositionalArgument("scene", "an .nff file or a built-in such as cube:4 (default cube:4)", "[scene]");
     const QCommandLineOption help({"h", "help"}, "Show this help.");
     const QCommandLineOption cache("cache", cacheNames().join(" | ") + " (default blocker)", "kind");
-    const QCommandLineOption order("order", "scanline | progressive | bfs (default bfs)", "kind");
+    const QCommandLineOption order("order", orderNames().join(" | ") + " (default bfs)", "kind");
     const QCommandLineOption width("width", "image width (default: the scene's)", "W");
     const QCommandLineOption height("height", "image height (default: the scene's)", "H");
     const QCommandLineOption steps("steps", "rays to trace before showing (screenshots: default 20000)", "N");
@@ -98,7 +115,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption screenshot("screenshot", "write the window to this PNG and exit", "file");
     const QCommandLineOption window("window", "window size of screenshots (default 1600x1000)", "WxH");
     const QCommandLineOption select("select", "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray)", "x,y[:path]");
-    const QCommandLineOption accel("accel", "linear | grid | bvh: what answers complete searches (default linear)", "kind");
+    const QCommandLineOption accel("accel", searchNames().join(" | ") + ": what answers complete searches (default linear)", "kind");
     const QCommandLineOption zoom("zoom", "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel", "F");
     const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
     const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
@@ -174,7 +191,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         const QStringList c = p.value(focus).split(',');
         int v[4] = {0, 0, 0, 0};
         bool ok = c.size() == 4;
-        for (int i = 0; ok && i < 4; ++i) ok = parseInt(c[i].trimmed(), 0, 16384, v[i]);
+        for (int i = 0; ok && i < 4; ++i) ok = parseInt(c[i].trimmed(), 0, kMaxSize, v[i]);
         if (!ok || v[2] <= v[0] || v[3] <= v[1]) {
             message = "--focus must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '" + p.value(focus) + "'";
             return ParseResult::Error;
@@ -211,11 +228,13 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     }
     if (p.isSet(order)) {
         const auto k = rc::parseOrderKind(p.value(order).toStdString());
-        if (!k) { message = "--order must be scanline, progressive or bfs, not '" + p.value(order) + "'"; return ParseResult::Error; }
+        if (!k) { message = "--order must be " + oneOf(orderNames()) + ", not '" + p.value(order) + "'"; return ParseResult::Error; }
         out.order = *k;
     }
-    if (p.isSet(width) && !parseInt(p.value(width), 1, 16384, out.width)) { message = "--width must be an integer in [1, 16384]"; return ParseResult::Error; }
-    if (p.isSet(height) && !parseInt(p.value(height), 1, 16384, out.height)) { message = "--height must be an integer in [1, 16384]"; return ParseResult::Error; }
+    // The command line's limit (rc::NffLimits::maxResolution), not one of the GUI's own
+    const QString sizeRange = QString("[1, %1]").arg(kMaxSize);
+    if (p.isSet(width) && !parseInt(p.value(width), 1, kMaxSize, out.width)) { message = "--width must be an integer in " + sizeRange; return ParseResult::Error; }
+    if (p.isSet(height) && !parseInt(p.value(height), 1, kMaxSize, out.height)) { message = "--height must be an integer in " + sizeRange; return ParseResult::Error; }
     if (p.isSet(steps)) {
         bool ok = false;
         out.steps = p.value(steps).toLongLong(&ok);
@@ -260,7 +279,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     }
     if (p.isSet(accel)) {
         const auto k = rc::parseAccelKind(p.value(accel).toStdString());
-        if (!k || *k == rc::AccelKind::Embree) { message = "--accel must be linear, grid or bvh, not '" + p.value(accel) + "'"; return ParseResult::Error; }
+        if (!k || rc::searchRegistry()[std::size_t(*k)].comparisonOnly) { message = "--accel must be " + oneOf(searchNames()) + ", not '" + p.value(accel) + "'"; return ParseResult::Error; }
         out.accel = *k;
     }
     if (p.isSet(zoom)) {

@@ -26,6 +26,10 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "order/order_registry.h"
+#include "search/search_registry.h"
+#include "view/compare_caption.h"
+#include "view/scene_list.h"
 #include "cache_tree_panel.h"
 #include "event_log_panel.h"
 #include "frame_log.h"
@@ -352,12 +356,8 @@ void MainWindow::refreshCompare() {
     overlayPainter_.setHeatmap(heatmap_, top);
     QStringList extra;
     if (s) {
-        const double a = double(s->session().counters().intersectionTests);
-        const double b = double(c->session().counters().intersectionTests);
-        extra << QString("tests %1 = %2x the left's %3").arg(b, 0, 'f', 0).arg(a > 0 ? b / a : 0.0, 0, 'f', 2).arg(a, 0, 'f', 0)
-              << QString("difference %1%2 tests").arg(b >= a ? "+" : "").arg(b - a, 0, 'f', 0);
-        if (s->session().steps() != c->session().steps())
-            extra << QString("catching up: step %1 of %2").arg(c->session().steps()).arg(s->session().steps());
+        // The core's lines (rc::compareCaption), as the page's
+        for (const std::string& line : rc::compareCaption(*s, *c)) extra << QString::fromStdString(line);
         stats_->refresh(s, c);
     }
     comparePainter_.setExtraCaption(extra);
@@ -393,26 +393,10 @@ void MainWindow::buildToolbars() {
     sceneBox_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     sceneBox_->setMinimumContentsLength(10);
     // Built-ins (cube:N and balls:N in the sizes the core suggests), then every scene of the
-    // project's scenes/ folder
-    for (const rc::BuiltinInfo& b : rc::builtinScenes()) {
-        const QString name = QString::fromStdString(b.name);
-        QStringList specs;
-        if (name.contains(":N"))
-            for (int n : b.sizes) specs << QString(name).replace(":N", QString(":%1").arg(n));
-        else
-            specs << name;
-        for (const QString& spec : specs) {
-            sceneBox_->addItem(spec, spec);
-            sceneBox_->setItemData(sceneBox_->count() - 1, QString::fromStdString(b.description), Qt::ToolTipRole);
-        }
-    }
-    const QDir scenes(scenesFolder());
-    // By suffix, not a "*.nff" name filter: that compiles a regular expression, whose
-    // machine code (PCRE2's JIT) valgrind cannot follow
-    for (const QFileInfo& f : scenes.entryInfoList(QDir::Files, QDir::Name)) {
-        if (f.suffix().toLower() != "nff") continue;
-        sceneBox_->addItem(f.fileName(), f.absoluteFilePath());
-        sceneBox_->setItemData(sceneBox_->count() - 1, f.absoluteFilePath(), Qt::ToolTipRole);
+    // project's scenes/ folder: the core's list (rc::sceneChoices), as the page's
+    for (const rc::SceneChoice& c : rc::sceneChoices(QDir(scenesFolder()).absolutePath().toStdString())) {
+        sceneBox_->addItem(QString::fromStdString(c.label), QString::fromStdString(c.spec));
+        sceneBox_->setItemData(sceneBox_->count() - 1, QString::fromStdString(c.description), Qt::ToolTipRole);
     }
     sceneBox_->setToolTip("Scene: built-ins, or files opened with Open…");
     render->addWidget(toolbarLabel("Scene"));
@@ -434,8 +418,8 @@ void MainWindow::buildToolbars() {
     // The order
     orderBox_ = new QComboBox(this);
     orderBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    for (auto k : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
-        orderBox_->addItem(text(rc::toString(k)), int(k));
+    for (std::size_t k = 0; k < rc::orderRegistry().size(); ++k)  // every registered order
+        orderBox_->addItem(text(rc::orderRegistry()[k].name), int(k));
     orderBox_->setCurrentIndex(2);
     orderBox_->setToolTip("progressive: all eye rays first, then deeper rays (the paper's conclusion)");
     render->addWidget(toolbarLabel("Order"));
@@ -445,8 +429,8 @@ void MainWindow::buildToolbars() {
     // The complete search
     accelBox_ = new QComboBox(this);
     accelBox_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    for (auto k : {rc::AccelKind::Linear, rc::AccelKind::Grid, rc::AccelKind::Bvh})
-        accelBox_->addItem(text(rc::toString(k)), int(k));
+    for (std::size_t k = 0; k < rc::searchRegistry().size(); ++k)  // every exact complete search
+        if (!rc::searchRegistry()[k].comparisonOnly) accelBox_->addItem(text(rc::searchRegistry()[k].name), int(k));
     accelBox_->setToolTip("What answers the complete searches: a linear scan, a uniform grid or a BVH");
     render->addWidget(toolbarLabel("Search"));
     render->addWidget(accelBox_);
@@ -469,7 +453,7 @@ void MainWindow::buildToolbars() {
     compareBox_->setMinimumContentsLength(12);
     compareBox_->addItem("off", "off");
     for (auto c : rc::allCacheKinds())
-        for (auto o : {rc::OrderKind::Scanline, rc::OrderKind::Progressive, rc::OrderKind::BreadthFirst})
+        for (auto o : rc::allOrderKinds())
             compareBox_->addItem(toString(CompareChoice{c, o}), toString(CompareChoice{c, o}));
     compareBox_->setToolTip("Compare: run a second render with another cache and order beside this one, in lockstep");
     render->addWidget(toolbarLabel("Compare"));

@@ -1,5 +1,7 @@
 #include "overlay_options.h"
 
+#include "view/overlay_registry.h"
+
 namespace rcgui {
 
 QString toString(Heatmap h) {
@@ -24,12 +26,14 @@ std::optional<Overlays> Overlays::parse(const QString& list) {
     Overlays o;
     for (const QString& raw : list.split(',', Qt::SkipEmptyParts)) {
         const QString w = raw.trimmed().toLower();
-        if (w == "cylinder") o.cylinder = true;
-        else if (w == "cone" || w == "hull" || w == "blocker") o.hull = true;
-        else if (w == "frontier" || w == "bfs") o.frontier = true;
-        else if (w == "misses" || w == "miss") o.misses = true;
-        else if (w == "samples" || w == "fan") o.samples = true;
-        else if (w == "grid") o.grid = true;
+        // Names and aliases are the core's (rc::overlayRegistry), as the page's
+        const std::string name = rc::overlayNamed(w.toStdString());
+        if (name == "cylinder") o.cylinder = true;
+        else if (name == "hull") o.hull = true;
+        else if (name == "frontier") o.frontier = true;
+        else if (name == "misses") o.misses = true;
+        else if (name == "samples") o.samples = true;
+        else if (name == "grid") o.grid = true;
         else if (w == "all") o.cylinder = o.hull = o.frontier = o.misses = o.samples = true;
         else if (w == "none") o.cylinder = o.hull = o.frontier = o.misses = o.samples = false;
         else return std::nullopt;

@@ -1,5 +1,7 @@
 #include "overlay_painter.h"
 
+#include "view/legend.h"
+
 #include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 
@@ -77,6 +79,7 @@ void OverlayPainter::paint(QPainter& p, const rc::SessionState& s, const Overlay
                            double scale) {
     p.setRenderHint(QPainter::Antialiasing, true);
     work_ = {};
+    drawn_.clear();
     lineScale_ = o.lineScale;
     Projector proj(s.scene().camera, s.camera());
     // Everything is clipped to what the widget shows, with a margin so that cut edges
@@ -126,7 +129,8 @@ void OverlayPainter::paintFocus(QPainter& p, const rc::SessionState& s, const Pr
                                 const rc::RayFocus& f, const Overlays& o) {
     if (!(o.hull || o.cylinder)) return;
     // The core makes the shapes (rc::focusShapes); here each role gets its colour and line
-    for (const rc::OverlayShape& shape : rc::focusShapes(s, f, proj.core(), {o.cylinder, o.hull})) paintShape(p, shape);
+    drawn_ = rc::focusShapes(s, f, proj.core(), {o.cylinder, o.hull});
+    for (const rc::OverlayShape& shape : drawn_) paintShape(p, shape);
     // The ray's pixel
     const QPointF c = pixelCentre(f.pixel, s.width());
     p.setPen(cosmetic(Qt::black, 2.0));
@@ -158,21 +162,15 @@ void OverlayPainter::paintShape(QPainter& p, const rc::OverlayShape& shape) {
             p.drawLine(centre - d, centre + d);
         }
     };
-    switch (shape.role) {
-        case ShapeRole::Cylinder: closed(palette::kCylinder, 2.0, Qt::DashLine, 35); break;
-        case ShapeRole::CachedCylinder: closed(palette::kCylinder, 2.5, Qt::SolidLine, 60); break;
-        case ShapeRole::CylinderAxis: segment(palette::kCylinder, 1.5, Qt::DashLine); break;
-        case ShapeRole::EmptyCone: closed(palette::kHull, 2.5, Qt::DashLine, 30); break;
-        case ShapeRole::EmptyConeAxis: star(palette::kHull, 5.7, 2); break;
-        case ShapeRole::Hull: closed(palette::kHull, 2.5, Qt::SolidLine, 45); break;
-        case ShapeRole::Origin: closed(palette::kOrigin, 1.5, Qt::DashLine, 0); break;
-        case ShapeRole::Target: closed(palette::kTarget, 3.0, Qt::SolidLine, 40); break;
-        case ShapeRole::TargetPoint: star(palette::kTarget, 8.0, 4); break;
-        case ShapeRole::Blocker: closed(palette::kBlocker, 3.0, Qt::SolidLine, 80); break;
-        case ShapeRole::CylinderLeft: closed(palette::kMissCause, 2.5, Qt::DashLine, 40); break;
-        case ShapeRole::MissedTarget: closed(palette::kMissCause, 3.5, Qt::SolidLine, 50); break;
-        case ShapeRole::BlockerHit: closed(palette::kBlocker, 4.0, Qt::SolidLine, 120); break;
-        case ShapeRole::Ray: segment(palette::kRay, 2.5, Qt::SolidLine); break;
+    // Each role's colour, width, dash and fill are the core's (rc::roleStyle), as the page's
+    const rc::RoleStyle st = rc::roleStyle(shape.role);
+    const QColor colour = palette::qt(st.colour);
+    if (st.star > 0.0) {
+        if (shape.point) star(colour, st.star, st.arms);
+    } else if (shape.segment) {
+        segment(colour, st.width, st.dashed ? Qt::DashLine : Qt::SolidLine);
+    } else {
+        closed(colour, st.width, st.dashed ? Qt::DashLine : Qt::SolidLine, st.fill);
     }
 }
 
@@ -340,51 +338,15 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     const rc::RenderSession& session = s.session();
     for (const std::string& line : rc::focusCaption(s, sel)) caption << QString::fromStdString(line);
     const auto focus = rc::RayFocus::of(s, sel);
-    // The key: a line for each overlay shown
-    if (o.hull || o.cylinder)
-        keys.push_back({palette::kRay, focus && focus->selected ? "selected ray" : "ray being traced"});
-    if (o.cylinder) keys.push_back({palette::kCylinder, "cylinder of safety (dashed: around this ray, not cached)"});
-    if (o.hull) {
-        if (session.strategy().blockerLists()) {
-            keys.push_back({palette::kHull, "blocker hull of origin and target (dashed: empty cone of eye rays)"});
-            keys.push_back({palette::kTarget, "target (cached object)"});
-            // A long list is drawn in part: say how much
-            const rc::FocusHull h = focus ? rc::hullOf(s, *focus) : rc::FocusHull{};
-            keys.push_back({palette::kBlocker, h.listed > h.blockers.size()
-                                                   ? QString("potential blockers: the %1 nearest of %L2 listed")
-                                                         .arg(h.blockers.size()).arg(h.listed)
-                                                   : QString("potential blockers")});
-        } else {
-            keys.push_back({palette::kHull, "blocker hull: blocker cache only"});
-        }
-    }
-    // The breadth-first frontier
-    if (o.frontier) {
-        const rc::FrontierView f = session.order().frontier();
-        if (f.path >= 0) {
-            keys.push_back({palette::kQueued, QString("queued (%1)").arg(f.queued.size())});
-            keys.push_back({palette::kDeferred, QString("deferred seeds (%1)").arg(f.deferred.size())});
-            keys.push_back({palette::kRegion, QString("region %1 being filled, path %2")
-                                                  .arg(f.region)
-                                                  .arg(QString::fromStdString(session.cacheTree().label(f.path)))});
-            keys.push_back({palette::kRegionEdge, "edges of finished regions"});
-        } else {
-            keys.push_back({palette::kQueued, "frontier: breadth-first order only"});
-        }
-    }
-    // Miss marks, by reason
-    if (o.misses) {
-        // Counted over every path; the marks show the path of the ray being traced
-        const rc::Counters& n = session.counters();
-        const int path = focus ? focus->node : 0;
-        keys.push_back({Qt::transparent, QString("misses marked at path %1; all paths:")
-                                             .arg(QString::fromStdString(session.cacheTree().label(path)))});
-        for (int r = 1; r < rc::kMissReasons; ++r)
-            if (n.missReasons[r] > 0)
-                keys.push_back({palette::missReason(rc::MissReason(r)),
-                                QString("miss: %1 (%2)").arg(QString::fromUtf8(rc::toString(rc::MissReason(r)).data()))
-                                    .arg(n.missReasons[r])});
-    }
+    // The key: the core's entries (rc::legendEntries, as the page's), for the shapes drawn
+    const rc::LegendShown shown{o.cylinder, o.hull, o.frontier, o.misses};
+    coreKeys_.clear();
+    const auto addKeys = [&keys, this](const std::vector<rc::LegendEntry>& entries) {
+        for (const rc::LegendEntry& e : entries)
+            keys.push_back({e.colour ? palette::qt(*e.colour) : QColor(Qt::transparent), QString::fromStdString(e.text)});
+        coreKeys_.insert(coreKeys_.end(), entries.begin(), entries.end());
+    };
+    addKeys(rc::legendEntries(s, sel, shown, drawn_));
     // The sample rays of the pixel in focus
     if (o.samples && focus) {
         const rc::SampleFan& fan = s.fan(focus->pixel);
@@ -408,14 +370,9 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
         if (fan.notCast > 0)
             keys.push_back({Qt::transparent, QString("no ray to %1 light points (behind the surface)").arg(fan.notCast)});
     }
-    // A miss in focus: what caused it, in words and in red
-    if (focus && (o.hull || o.cylinder)) {
-        const std::string cause = rc::missCauseText(s, *focus);
-        if (!cause.empty()) keys.push_back({palette::kMissCause, QString::fromStdString(cause)});
-    }
-    // The selection, and the pixel being traced
+    // The miss in focus's cause and the selected pixel (rc::focusEntries)
+    addKeys(rc::focusEntries(s, sel, shown, drawn_));
     caption << extraCaption_;
-    if (sel.pixel >= 0) keys.push_back({palette::kSelection, QString("selected pixel (%1,%2)").arg(sel.pixel % s.width()).arg(sel.pixel / s.width())});
     if (const auto& last = s.recorder().lastEvent(); (sel.pixel >= 0 || sel.event >= 0) && last && !session.done())
         keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
 

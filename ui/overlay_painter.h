@@ -9,6 +9,7 @@
 #include <QStringList>
 
 #include "overlay_options.h"
+#include "view/legend.h"
 #include "view/overlay_shapes.h"
 #include "view/path_index.h"
 #include "view/ray_focus.h"
@@ -82,9 +83,15 @@ private:
 public:
     /// What the last paint() drew.
     const PaintWork& lastWork() const { return work_; }
+    /// The shapes of the ray in focus the last paint() drew (rc::focusShapes).
+    const std::vector<rc::OverlayShape>& drawnShapes() const { return drawn_; }
+    /// The core's key entries (rc::legendEntries, rc::focusEntries) of the last paintLegend().
+    const std::vector<rc::LegendEntry>& coreKeys() const { return coreKeys_; }
 
 private:
     PaintWork work_;
+    std::vector<rc::OverlayShape> drawn_;  ///< the shapes of the ray in focus the last paint() drew
+    std::vector<rc::LegendEntry> coreKeys_;
     Heatmap heatmap_ = Heatmap::None;
     double heatTop_ = 0.0, lastTop_ = 0.0;
     QStringList extraCaption_;

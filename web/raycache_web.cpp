@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,12 +16,19 @@
 #include <emscripten/val.h>
 #include <nlohmann/json.hpp>
 
+#include "render/left_out.h"
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
+#include "scene/nff_reader.h"
 #include "view/image_projector.h"
 #include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 #include "view/session_state.h"
+#include "view/compare_caption.h"
+#include "view/legend.h"
+#include "view/palette.h"
+#include "view/registry_listing.h"
+#include "view/scene_list.h"
 #include "view/tour.h"
 
 namespace {
@@ -35,11 +44,13 @@ std::string storeSceneFile(const std::string& name, const std::string& text) {
     return path;
 }
 
-// The built-in scenes, one "name\tdescription" line each
-std::string builtinSceneList() {
-    std::string out;
-    for (const BuiltinInfo& b : builtinScenes()) out += b.name + "\t" + b.description + "\n";
-    return out;
+// The Scene menu (rc::sceneChoices, as the Qt GUI's): the built-ins, then the SPD scenes the
+// page carries under /scenes, as JSON [{spec, label, description, file}]
+std::string sceneList() {
+    nlohmann::json out = nlohmann::json::array();
+    for (const SceneChoice& c : sceneChoices("/scenes"))
+        out.push_back({{"spec", c.spec}, {"label", c.label}, {"description", c.description}, {"file", c.file}});
+    return out.dump();
 }
 
 // The names of the miss reasons, by their number in missReasons(), one a line
@@ -68,6 +79,53 @@ std::string tourStop(const std::string& name, int stop) {
     }
 }
 
+// What a registry holds (rc::registryListing), as JSON: the page's menus; {error} when
+// `what` names no registry
+std::string registry(const std::string& what) {
+    try {
+        return registryListing(what).dump();
+    } catch (const std::exception& e) {
+        return nlohmann::json{{"error", e.what()}}.dump();
+    }
+}
+
+// The viewer's colours and role styles (rc::roleStyle, rc::missReasonColour, rc::heatRamp,
+// rc::colours), as JSON: the page draws with the Qt GUI's numbers, read from the one place
+std::string palette() {
+    const auto rgb = [](Rgb c) { return nlohmann::json::array({c.r, c.g, c.b}); };
+    nlohmann::json roles = nlohmann::json::object();
+    for (int r = 0; r < kShapeRoles; ++r) {
+        const RoleStyle st = roleStyle(ShapeRole(r));
+        roles[toString(ShapeRole(r))] = {{"colour", rgb(st.colour)}, {"width", st.width}, {"dash", st.dashed},
+                                         {"fill", st.fill},          {"star", st.star},   {"arms", st.arms}};
+    }
+    nlohmann::json misses = nlohmann::json::array();
+    for (int r = 0; r < kMissReasons; ++r) misses.push_back(r == 0 ? nlohmann::json() : rgb(missReasonColour(MissReason(r))));
+    constexpr int kRampSteps = 1024;
+    nlohmann::json ramp = nlohmann::json::array();
+    for (int i = 0; i < kRampSteps; ++i) ramp.push_back(rgb(heatRamp(double(i) / (kRampSteps - 1))));
+    using namespace colours;
+    return nlohmann::json{{"roles", roles}, {"misses", misses}, {"ramp", ramp},
+                          {"colours", {{"ray", rgb(kRay)}, {"cylinder", rgb(kCylinder)}, {"hull", rgb(kHull)},
+                                       {"target", rgb(kTarget)}, {"blocker", rgb(kBlocker)}, {"queued", rgb(kQueued)},
+                                       {"deferred", rgb(kDeferred)}, {"region", rgb(kRegion)},
+                                       {"regionEdge", rgb(kRegionEdge)}, {"selection", rgb(kSelection)},
+                                       {"missCause", rgb(kMissCause)}}}}
+        .dump();
+}
+
+// "unknown cache 'bogus': choose none, cylinder, ...": a name no registry entry has
+template <class Kind>
+Kind named(const std::optional<Kind>& kind, const char* what, const std::string& name, const nlohmann::json& list) {
+    if (kind) return *kind;
+    std::string choices;
+    for (const auto& e : list) choices += (choices.empty() ? "" : ", ") + e["name"].get<std::string>();
+    throw std::invalid_argument(std::string("unknown ") + what + " '" + name + "': choose " + choices);
+}
+
+// The largest width or height the page traces (viewer.js's inputs say the same)
+constexpr int kMaxWebSize = 2048;
+
 val points(const Outline& outline) {
     val out = val::array();
     for (const ImagePoint& p : outline) {
@@ -79,25 +137,46 @@ val points(const Outline& outline) {
 
 class WebRender {
 public:
+    /// Never throws: a scene or a choice that cannot be used leaves error() saying why (a
+    /// C++ exception reaches JavaScript as a bare number, not as its message).
     WebRender(const std::string& scene, int width, int height, const std::string& cache, const std::string& order,
+              const std::string& accel) {
+        try {
+            open(scene, width, height, cache, order, accel);
+        } catch (const std::bad_alloc&) {
+            error_ = "out of memory: the image is too large for this tab";
+        } catch (const std::exception& e) {
+            error_ = e.what();
+        }
+    }
+    /// Why the render could not be made ("" when it was).
+    std::string error() const { return error_; }
+
+private:
+    void open(const std::string& scene, int width, int height, const std::string& cache, const std::string& order,
               const std::string& accel) {
         SessionConfig config;
         config.scene = std::make_shared<const Scene>(loadScene(scene, 1986));
         RenderOptions& o = config.options;
         o.width = width > 0 ? width : config.scene->camera.width;
         o.height = height > 0 ? height : config.scene->camera.height;
-        const auto c = parseCacheKind(cache);
-        const auto r = parseOrderKind(order);
-        const auto a = parseAccelKind(accel);
-        if (!c || !r || !a) throw std::invalid_argument("unknown cache, order or search");
-        o.cache = *c;
-        o.order = *r;
-        o.accel = *a;
+        // A tab holds about 4 GB: the page keeps its images up to kMaxWebSize on a side
+        if (o.width > kMaxWebSize || o.height > kMaxWebSize)
+            throw std::invalid_argument("the page traces images of at most " + std::to_string(kMaxWebSize) + "x" +
+                                        std::to_string(kMaxWebSize) + " pixels, not " + std::to_string(o.width) +
+                                        "x" + std::to_string(o.height) +
+                                        " (larger ones need more memory than a browser tab has; raycache render "
+                                        "traces up to " + std::to_string(NffLimits::maxResolution) + ")");
+        o.cache = named(parseCacheKind(cache), "cache", cache, registryListing("caches"));
+        o.order = named(parseOrderKind(order), "order", order, registryListing("orders"));
+        o.accel = named(parseAccelKind(accel), "search", accel, registryListing("searches"));
         // The page has no Step back: one checkpoint, at step 0
         config.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
         state_ = std::make_unique<SessionState>(std::move(config));
         projector_ = std::make_unique<ImageProjector>(state_->scene().camera, state_->camera());
     }
+
+public:
 
     int width() const { return state_->width(); }
     int height() const { return state_->height(); }
@@ -128,7 +207,7 @@ public:
             if (reason == toString(MissReason(r))) filter = MissReason(r);
         state_->setMissFilter(filter);
         const bool met = state_->runUntil(goal == "miss" ? RunGoal::NextMiss : RunGoal::NextPixel, 0);
-        if (state_->stopEvent() >= 0) selection_.event = state_->stopEvent();
+        if (state_->stopEvent() >= 0) selectEvent(state_->stopEvent());
         return met && !(goal == "miss" && state_->stopEvent() < 0);
     }
     /// Puts pixel (x, y)'s ray at `path` in focus (its eye ray when `path` is empty);
@@ -148,10 +227,16 @@ public:
     /// stop that shows the scene view without choosing a ray. False when none is traced.
     bool showcase() {
         selection_ = {};
-        selection_.event = showcaseEvent(*state_);
-        return selection_.event >= 0;
+        const int e = showcaseEvent(*state_);
+        if (e >= 0) selectEvent(e);
+        return e >= 0;
     }
     void clearSelection() { selection_ = {}; }
+    /// Puts event `e` in focus and selects its pixel, as the Qt GUI does for a stop's ray.
+    void selectEvent(int e) {
+        selection_.event = e;
+        if (const auto f = RayFocus::ofEvent(*state_, e)) selection_.pixel = f->pixel;
+    }
     int selectedPixel() const { return selection_.pixel; }
 
     /// The 8-bit RGB image, rows top to bottom (a view into memory the next call may move).
@@ -198,10 +283,12 @@ public:
     /// flat, segment: [ax, ay, bx, by], point: [x, y]}], in drawing order.
     val shapes(bool cylinder, bool hull, double left, double top, double right, double bottom) {
         val out = val::array();
+        drawn_.clear();
         const auto f = RayFocus::of(*state_, selection_);
         if (!f) return out;
         projector_->setClip({left, top, right, bottom});
-        for (const OverlayShape& s : focusShapes(*state_, *f, *projector_, {cylinder, hull})) {
+        drawn_ = focusShapes(*state_, *f, *projector_, {cylinder, hull});
+        for (const OverlayShape& s : drawn_) {
             val v = val::object();
             v.set("role", std::string(toString(s.role)));
             v.set("label", s.label);
@@ -236,10 +323,39 @@ public:
         return out;
     }
 
+    /// The key (rc::legendEntries, then rc::focusEntries), for the overlays shown and the
+    /// shapes the last shapes() gave (none when neither cylinder nor hull is on), as JSON:
+    /// [{colour: [r, g, b] or null, text}].
+    std::string keys(bool cylinder, bool hull, bool frontier, bool misses) {
+        if (!(cylinder || hull)) drawn_.clear();
+        const LegendShown shown{cylinder, hull, frontier, misses};
+        nlohmann::json out = nlohmann::json::array();
+        for (const auto& entries : {legendEntries(*state_, selection_, shown, drawn_),
+                                    focusEntries(*state_, selection_, shown, drawn_)})
+            for (const LegendEntry& e : entries)
+                out.push_back({{"colour", e.colour ? nlohmann::json::array({e.colour->r, e.colour->g, e.colour->b})
+                                                   : nlohmann::json()},
+                               {"text", e.text}});
+        return out.dump();
+    }
+
     /// The caption of the render and of the ray in focus (rc::focusCaption), a line each.
     std::string caption() const {
         std::string out;
         for (const std::string& line : focusCaption(*state_, selection_)) out += line + "\n";
+        return out;
+    }
+    /// The reader's warnings (rc::Scene::skipped): a polygon of zero area each, as
+    /// `file:line:column: message`, one a line.
+    std::string warnings() const {
+        std::string out;
+        for (const std::string& line : state_->scene().skipped) out += line + "\n";
+        return out;
+    }
+    /// The caption of `right` compared with this render (rc::compareCaption), a line each.
+    std::string compareCaption(const WebRender& right) const {
+        std::string out;
+        for (const std::string& line : rc::compareCaption(*state_, *right.state_)) out += line + "\n";
         return out;
     }
     /// The pixel of the ray being traced (-1: none yet).
@@ -260,7 +376,9 @@ public:
                               {"searches", n.completeSearches},
                               {"hits", n.hits},
                               {"misses", n.misses},
-                              {"steps", state_->session().steps()}}
+                              {"steps", state_->session().steps()},
+                              // What the render leaves out (rc::leftOut), polygons of zero area included
+                              {"leftOut", leftOut(state_->scene(), &state_->session().options())}}
             .dump();
     }
 
@@ -270,6 +388,8 @@ private:
     Selection selection_;
     std::vector<std::uint8_t> rgb_, misses_, regions_;
     std::vector<std::uint32_t> heat_;
+    std::string error_;
+    std::vector<OverlayShape> drawn_;  ///< the shapes the last shapes() gave
 };
 
 // Scene errors reach the page as text (file:line:column: message), not as an abort
@@ -287,12 +407,16 @@ std::string checkScene(const std::string& scene) {
 EMSCRIPTEN_BINDINGS(raycache) {
     using namespace emscripten;
     function("storeSceneFile", &storeSceneFile);
-    function("builtinSceneList", &builtinSceneList);
+    function("sceneList", &sceneList);
     function("checkScene", &checkScene);
     function("missReasonNames", &missReasonNames);
     function("tourStop", &tourStop);
+    function("registry", &registry);
+    function("palette", &palette);
+    constant("maxSize", kMaxWebSize);
     class_<WebRender>("Render")
         .constructor<std::string, int, int, std::string, std::string, std::string>()
+        .function("error", &WebRender::error)
         .function("width", &WebRender::width)
         .function("height", &WebRender::height)
         .function("done", &WebRender::done)
@@ -312,7 +436,10 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("frontier", &WebRender::frontier)
         .function("shapes", &WebRender::shapes)
         .function("legend", &WebRender::legend)
+        .function("keys", &WebRender::keys)
+        .function("compareCaption", &WebRender::compareCaption)
         .function("statistics", &WebRender::statistics)
         .function("caption", &WebRender::caption)
+        .function("warnings", &WebRender::warnings)
         .function("focusPixel", &WebRender::focusPixel);
 }

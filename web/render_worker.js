@@ -7,7 +7,8 @@ function renderWorkerMain(self, RayCache) {
   let module = null;
   let render = null;
   let running = null;  // 'play' or 'end' while a run goes on
-  let runMs = 0;       // milliseconds spent tracing in the run to the end
+  let runStart = 0;    // when the run to the end was asked for (performance.now())
+  let selected = null; // the pixel (and path) selected in both renders: {x, y, path}
   // What the page shows: which overlays, and the image rectangle they are clipped to
   let view = { cylinder: false, hull: false, frontier: false, misses: false, clip: null };
 
@@ -29,6 +30,7 @@ function renderWorkerMain(self, RayCache) {
     return {
       width: w, height: h, image, heat, misses, regions, shapes,
       frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
+      keys: JSON.parse(r.keys(view.cylinder, view.hull, view.frontier, view.misses)),
       statistics: JSON.parse(r.statistics()), caption: r.caption(),
       focusPixel: r.focusPixel(), selectedPixel: r.selectedPixel(), done: r.done(),
     };
@@ -40,6 +42,8 @@ function renderWorkerMain(self, RayCache) {
     if (!compare) return;
     compare.runToStep(render.steps());
     if (render.done() && !compare.done()) compare.run(1 << 30);
+    // Stepping clears a render's selection: the pixel selected in the first stays selected in both
+    if (selected) compare.select(selected.x, selected.y, selected.path);
   }
 
   function frame(extra) {
@@ -47,6 +51,7 @@ function renderWorkerMain(self, RayCache) {
     syncCompare();
     const first = picture(render, buffers);
     const second = compare ? picture(compare, buffers) : null;
+    if (second) second.compareCaption = render.compareCaption(compare);
     self.postMessage(Object.assign({ type: 'frame' }, first, {
       compare: second, progress: render.progress(), running,
     }, extra || {}), buffers);
@@ -61,9 +66,9 @@ function renderWorkerMain(self, RayCache) {
       let more = true;
       while (more && performance.now() - t0 < 250) more = render.run(20000);
     }
-    if (running === 'end') runMs += performance.now() - t0;
     if (render.done()) {
-      const ms = running === 'end' ? runMs : null;
+      // Wall time, from the click to the last ray (frames and pauses between slices included)
+      const ms = running === 'end' ? performance.now() - runStart : null;
       running = null;
       frame({ runMs: ms });
       return;
@@ -87,8 +92,8 @@ function renderWorkerMain(self, RayCache) {
       const [x, y] = xy.split(',').map(Number);
       const why = render.select(x, y, path || '');
       if (why) notes.push('select: ' + why);
+      else selected = { x, y, path: path || '' };
       syncCompare();
-      if (compare) compare.select(x, y, path || '');
     }
     return notes;
   }
@@ -102,6 +107,7 @@ function renderWorkerMain(self, RayCache) {
       self.postMessage({ type: 'tour', stop: JSON.parse(module.tourStop(m.tour, m.stop | 0)) });
     } else if (m.type === 'open') {
       running = null;
+      selected = null;
       if (m.view) view = m.view;
       if (render) { render.delete(); render = null; }
       if (compare) { compare.delete(); compare = null; }
@@ -110,29 +116,46 @@ function renderWorkerMain(self, RayCache) {
       const error = module.checkScene(spec);
       if (error) { self.postMessage({ type: 'error', message: error }); return; }
       let notes = [];
+      // A render that cannot be made says why in its error() (the bindings catch C++'s
+      // exceptions, which would reach here as bare numbers)
+      const make = (cache, order) => {
+        const r = new module.Render(spec, m.width | 0, m.height | 0, cache, order, m.accel);
+        const why = r.error();
+        if (!why) return r;
+        r.delete();
+        throw new Error(why);
+      };
       try {
-        render = new module.Render(spec, m.width | 0, m.height | 0, m.cache, m.order, m.accel);
-        if (m.compare) compare = new module.Render(spec, m.width | 0, m.height | 0, m.compare.cache, m.compare.order, m.accel);
-        if (m.stop) notes = goToStop(m.stop);
+        render = make(m.cache, m.order);
+        if (m.compare) compare = make(m.compare.cache, m.compare.order);
+        // The reader's warnings (a polygon of zero area, skipped), named as the CLI names them
+        notes = render.warnings().split('\n').filter(Boolean).map((w) => 'warning: ' + w);
+        if (m.stop) notes = notes.concat(goToStop(m.stop));
       } catch (e) {
-        self.postMessage({ type: 'error', message: String(e) });
+        if (render) { render.delete(); render = null; }
+        self.postMessage({ type: 'error', message: e instanceof Error ? e.message : 'the render failed (' + e + ')' });
         return;
       }
       frame({ opened: true, notes });
     } else if (!render) {
+      // A bad file left no picture: say so rather than do nothing
+      if (['ray', 'pixel', 'miss', 'select', 'play', 'end'].includes(m.type))
+        self.postMessage({ type: 'error', message: 'There is no picture to trace: open a scene that reads ' +
+                           'without errors (the Scene menu, Open file, or drop an NFF file on the picture).' });
       return;
     } else if (m.type === 'ray') {
-      running = null; render.run(1); frame();
+      running = null; selected = null; render.run(1); frame();
     } else if (m.type === 'pixel' || m.type === 'miss') {
-      running = null; render.runUntil(m.type, ''); frame();
+      running = null; selected = null; render.runUntil(m.type, ''); frame();
     } else if (m.type === 'select') {
       const why = render.select(m.x, m.y, '');
-      if (compare) compare.select(m.x, m.y, '');
+      selected = why ? null : { x: m.x, y: m.y, path: '' };
       frame(why ? { notes: [why] } : {});
     } else if (m.type === 'play' || m.type === 'end') {
       const wasRunning = running;
       running = m.type;
-      runMs = 0;
+      runStart = performance.now();
+      selected = null;
       render.clearSelection();
       if (compare) compare.clearSelection();
       if (!wasRunning) tick();
@@ -143,7 +166,11 @@ function renderWorkerMain(self, RayCache) {
 
   RayCache().then((m) => {
     module = m;
-    self.postMessage({ type: 'loaded', scenes: module.builtinSceneList(),
+    // The menus' choices come from the core's registries (rc::registryListing)
+    const registry = {};
+    for (const what of ['caches', 'orders', 'searches', 'overlays']) registry[what] = JSON.parse(module.registry(what));
+    self.postMessage({ type: 'loaded', scenes: JSON.parse(module.sceneList()), registry, maxSize: module.maxSize,
+                       palette: JSON.parse(module.palette()),
                       missReasons: module.missReasonNames().trim().split('\n') });
   });
 }

@@ -19,31 +19,19 @@
   let zoomAbout = 0;      // a stop's zoom, about the pixel in focus, once the render is open
   if (params.get('embed') === '1') document.body.classList.add('embed');
 
-  // The Qt GUI's colours (ui/palette.h), for the same roles
-  const kRay = [255, 235, 59], kCylinder = [0, 229, 255], kHull = [224, 64, 251], kTarget = [0, 230, 118],
-        kBlocker = [255, 145, 0], kOrigin = [255, 255, 255], kQueued = [118, 255, 3], kDeferred = [255, 23, 68],
-        kRegion = [255, 255, 255], kRegionEdge = [20, 20, 24], kSelection = [0, 176, 255], kMissCause = [255, 64, 64];
-  // Miss reasons by rc::MissReason's number (ui/palette.cpp)
-  const kMissColours = [null, [153, 153, 153], [240, 228, 66], [0, 114, 178], [213, 94, 0], [230, 159, 0],
-                        [86, 180, 233], [204, 121, 167]];
-  // How each role of rc::ShapeRole is drawn (ui/overlay_painter.cpp's paintShape): colour,
-  // line width, dashed, fill alpha (0-255); a star for a point
-  const kRoleStyles = {
-    Cylinder: { colour: kCylinder, width: 2.0, dash: true, fill: 35 },
-    CachedCylinder: { colour: kCylinder, width: 2.5, dash: false, fill: 60 },
-    CylinderAxis: { colour: kCylinder, width: 1.5, dash: true },
-    EmptyCone: { colour: kHull, width: 2.5, dash: true, fill: 30 },
-    EmptyConeAxis: { colour: kHull, star: 5.7, arms: 2 },
-    Hull: { colour: kHull, width: 2.5, dash: false, fill: 45 },
-    Origin: { colour: kOrigin, width: 1.5, dash: true, fill: 0 },
-    Target: { colour: kTarget, width: 3.0, dash: false, fill: 40 },
-    TargetPoint: { colour: kTarget, star: 8.0, arms: 4 },
-    Blocker: { colour: kBlocker, width: 3.0, dash: false, fill: 80 },
-    CylinderLeft: { colour: kMissCause, width: 2.5, dash: true, fill: 40 },
-    MissedTarget: { colour: kMissCause, width: 3.5, dash: false, fill: 50 },
-    BlockerHit: { colour: kBlocker, width: 4.0, dash: false, fill: 120 },
-    Ray: { colour: kRay, width: 2.5, dash: false },
-  };
+  // The colours, role styles and heatmap ramp are the core's (view/palette.h, which the Qt
+  // GUI draws with too), sent by the worker when the web edition has loaded (usePalette)
+  let kRay, kCylinder, kHull, kTarget, kBlocker, kQueued, kDeferred, kRegion, kRegionEdge, kSelection, kMissCause;
+  let kMissColours = [], kRoleStyles = {}, kRamp = [[0, 0, 0]];
+  function usePalette(p) {
+    const c = p.colours;
+    [kRay, kCylinder, kHull, kTarget, kBlocker, kQueued, kDeferred, kRegion, kRegionEdge, kSelection, kMissCause] =
+      [c.ray, c.cylinder, c.hull, c.target, c.blocker, c.queued, c.deferred, c.region, c.regionEdge, c.selection,
+       c.missCause];
+    kMissColours = p.misses;
+    kRoleStyles = p.roles;
+    kRamp = p.ramp;
+  }
   const rgba = (c, a) => 'rgba(' + c[0] + ',' + c[1] + ',' + c[2] + ',' + (a === undefined ? 1 : a / 255) + ')';
 
   // The worker, from a Blob: raycache.js's factory and renderWorkerMain, as source text
@@ -56,10 +44,18 @@
     worker.onerror = (e) => showError('worker: ' + e.message);
   }
 
+  // An error is a sentence in the caption; the picture, key and statistics of what was open
+  // before go, so that nothing of the old scene shows under the new name
   function showError(message) {
     $('caption').textContent = message;
     $('caption').className = 'error';
+    last = null;
+    context.setTransform(1, 0, 0, 1, 0, 0);
+    context.clearRect(0, 0, canvas.width, canvas.height);
+    for (const id of ['key', 'stats', 'left-out']) $(id).innerHTML = '';
+    for (const id of ['image-hash', 'timing', 'overlay-count', 'overlay-roles']) $(id).textContent = '';
   }
+  let maxSize = 2048;  // the largest width or height the page traces (the bindings' maxSize)
 
   // Scene names: a built-in name (cube:5), an SPD scene of scenes/ (scenes/balls2.nff)
   function sceneSpec(name) { return name.startsWith('scenes/') ? '/' + name : name; }
@@ -71,6 +67,13 @@
 
   function open(stopRays) {
     const width = +$('width').value, height = +$('height').value;
+    // The size limit, said before anything is traced (the bindings check it too)
+    for (const [name, v] of [['width', width], ['height', height]])
+      if (!(Number.isInteger(v) && v >= 0 && v <= maxSize)) {
+        showError('The ' + name + ' must be a whole number from 1 to ' + maxSize + ' (0: the scene\'s own), not ' +
+                  $(name).value + ': a larger image needs more memory than a browser tab has.');
+        return;
+      }
     const m = { type: 'open', width, height, cache: $('cache').value, order: $('order').value,
                 accel: $('accel').value, view: overlayChoice(), stop: stopRays || null, compare: null };
     const [compareCache, compareOrder] = $('compare').value.split(':');
@@ -88,8 +91,19 @@
 
   function onMessage(m) {
     if (m.type === 'loaded') {
+      maxSize = m.maxSize;
+      for (const id of ['width', 'height']) $(id).max = maxSize;
       kMissNames = m.missReasons;
+      usePalette(m.palette);
+      fillChoices(m.registry);
       fillScenes(m.scenes);
+      // The first view teaches: with nothing asked for, the lecture's first stop, its caption
+      // and its ray in focus with overlays on
+      if (![...params.keys()].some((k) => k !== 'embed')) {
+        params.set('tour', 'hanrahan86');
+        params.set('stop', '1');
+        history.replaceState(null, '', '?' + params.toString());
+      }
       if (params.has('tour')) {
         worker.postMessage({ type: 'tour', tour: params.get('tour'), stop: +(params.get('stop') || 1) });
         return;
@@ -111,6 +125,7 @@
       canvas.classList.toggle('wide', !!m.compare);
       showKey(m);
       $('play').textContent = m.running === 'play' ? 'Pause' : 'Play';
+      if (m.notes && m.notes.length) $('stop').hidden = false;
       if (m.notes && m.notes.length) $('stop-notes').textContent = [stopNotes].concat(m.notes).filter(Boolean).join(' ');
       if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
       if (m.runMs !== undefined && m.runMs !== null)
@@ -140,10 +155,10 @@
     $('cache').value = s.get('cache') || 'blocker';
     $('order').value = s.get('order') || 'bfs';
     $('accel').value = s.get('accel') || 'linear';
-    const overlays = (s.get('overlays') || '').split(',');
+    const overlays = (s.get('overlays') || '').split(',').map(overlayName);
     const has = (w) => overlays.includes(w) || overlays.includes('all');
     $('ov-cylinder').checked = has('cylinder');
-    $('ov-hull').checked = has('cone') || has('hull') || has('blocker');
+    $('ov-hull').checked = has('hull');
     $('ov-frontier').checked = has('frontier');
     $('ov-misses').checked = has('misses');
     $('heatmap').checked = s.get('heatmap') === 'tests';
@@ -190,6 +205,49 @@
     worker.postMessage({ type: 'view', view: overlayChoice() });
   }
 
+  // The cache, order, search and compare menus: the core's registries, in their order
+  function fillChoices(registry) {
+    const fill = (id, entries, chosen) => {
+      for (const e of entries) {
+        const o = document.createElement('option');
+        o.value = o.textContent = e.name;
+        o.title = e.description;
+        $(id).appendChild(o);
+      }
+      $(id).value = chosen;
+    };
+    fill('cache', registry.caches, 'blocker+');
+    fill('order', registry.orders, 'bfs');
+    fill('accel', registry.searches.filter((e) => !e.comparison_only), 'linear');
+    for (const c of registry.caches)
+      for (const o of registry.orders) {
+        const option = document.createElement('option');
+        option.value = option.textContent = c.name + ':' + o.name;
+        $('compare').appendChild(option);
+      }
+    // The URL's choices, once the menus hold them; a '+' the URL did not encode reads as a
+    // space (blocker+ arrives as "blocker "): it is put back
+    for (const key of ['cache', 'order', 'accel']) {
+      if (!params.has(key)) continue;
+      const wanted = params.get(key).replace(/ /g, '+');
+      // A name no registry holds stays chosen, so that the render says it is unknown
+      if (![...$(key).options].some((o) => o.value === wanted)) {
+        const o = document.createElement('option');
+        o.value = o.textContent = wanted;
+        $(key).appendChild(o);
+      }
+      $(key).value = wanted;
+    }
+    kOverlays = registry.overlays;
+  }
+  // The overlays' names and aliases (rc::overlayRegistry), as the Qt GUI reads them
+  let kOverlays = [];
+  const overlayName = (word) => {
+    const w = word.trim().toLowerCase();
+    const o = kOverlays.find((e) => e.name === w || e.aliases.includes(w));
+    return o ? o.name : w;
+  };
+
   function addSceneOption(value, text) {
     const o = document.createElement('option');
     o.value = value;
@@ -198,26 +256,20 @@
     return o;
   }
 
-  // The built-in scenes with a size, and the SPD scenes that travel with the page
+  // The Scene menu: the core's list (rc::sceneChoices, as the Qt GUI's), the built-ins and
+  // the SPD scenes that travel with the page (as scenes/NAME.nff, the name the URL takes)
   function fillScenes(list) {
     const select = $('scene');
-    const names = ['cube:3', 'cube:4', 'cube:5', 'balls:1', 'balls:2', 'balls:3', 'glass', 'fill', 'pair', 'trio'];
-    const files = ['balls1', 'balls2', 'gears2', 'jacks2', 'lattice2', 'mount2', 'rings2', 'shells1', 'teapot2',
-                   'tetra2', 'tree2'].map((s) => 'scenes/' + s + '.nff');
-    const described = new Map(list.trim().split('\n').map((l) => l.split('\t')));
-    for (const n of names.concat(files)) addSceneOption(n, n).title = described.get(n.replace(/:\d+$/, ':N')) || '';
+    for (const c of list) addSceneOption(c.file ? c.spec.replace(/^\//, '') : c.spec, c.label).title = c.description;
     const wanted = params.get('scene');
     if (wanted && ![...select.options].some((o) => o.value === wanted)) addSceneOption(wanted, wanted);
     select.value = wanted || 'cube:4';
   }
 
   // ---- Drawing ---------------------------------------------------------------------------
-  // The viridis-like ramp of the Qt GUI's heatmaps (ui/palette.cpp)
-  const kRamp = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+  // The heatmaps' ramp (rc::heatRamp), sampled by the core
   function ramp(t) {
-    t = Math.min(1, Math.max(0, t)) * 4;
-    const i = Math.min(3, Math.floor(t)), f = t - i, a = kRamp[i], b = kRamp[i + 1];
-    return [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])];
+    return kRamp[Math.round(Math.min(1, Math.max(0, t)) * (kRamp.length - 1))];
   }
 
   // The picture at image size: the image or the heatmap (on the scale `most`, shared by
@@ -340,10 +392,9 @@
   function captionOf(m) {
     let text = m.caption.trim();
     if (m.compare) {
-      const a = m.statistics.tests, b = m.compare.statistics.tests;
-      text = 'left: ' + text + '\nright: ' + m.compare.caption.trim() +
-        '\ntests ' + b + ' = ' + (a > 0 ? (b / a).toFixed(2) : '0.00') + 'x the left\'s ' + a +
-        ', difference ' + (b >= a ? '+' : '') + (b - a) + ' tests';
+      // The comparison's lines are the core's (rc::compareCaption), as the Qt GUI's
+      text = 'left: ' + text + '\nright: ' + m.compare.caption.trim() + '\n' +
+        m.compare.compareCaption.trim().split('\n').join(', ');
     }
     return text;
   }
@@ -414,48 +465,16 @@
   }
 
   // ---- The key and the statistics -----------------------------------------------------
+  // The key: the core's entries (rc::legendEntries, rc::focusEntries), as the Qt GUI's,
+  // then the heatmap's scale
   function showKey(m) {
-    const keys = [];
-    const L = m.legend;
-    const names = kMissNames;
-    if ($('ov-cylinder').checked || $('ov-hull').checked)
-      keys.push([kRay, L.selected ? 'selected ray' : 'ray being traced']);
-    if ($('ov-cylinder').checked) keys.push([kCylinder, 'cylinder of safety (dashed: around this ray, not cached)']);
-    if ($('ov-hull').checked) {
-      if (L.blockerLists) {
-        keys.push([kHull, 'blocker hull of origin and target (dashed: empty cone of eye rays)']);
-        keys.push([kTarget, 'target (cached object)']);
-        keys.push([kBlocker, L.blockersListed > L.blockersShown
-          ? 'potential blockers: the ' + L.blockersShown + ' nearest of ' + L.blockersListed.toLocaleString('en') + ' listed'
-          : 'potential blockers']);
-      } else {
-        keys.push([kHull, 'blocker hull: blocker cache only']);
-      }
-    }
-    if (m.frontier) {
-      if (m.frontier.path) {
-        keys.push([kQueued, 'queued (' + m.frontier.queued.length + ')']);
-        keys.push([kDeferred, 'deferred seeds (' + m.frontier.deferred.length + ')']);
-        keys.push([kRegion, 'region ' + m.frontier.region + ' being filled, path ' + m.frontier.path]);
-        keys.push([kRegionEdge, 'edges of finished regions']);
-      } else {
-        keys.push([kQueued, 'frontier: breadth-first order only']);
-      }
-    }
-    if ($('ov-misses').checked) {
-      keys.push([null, 'misses marked at path ' + (L.path || 'eye') + '; all paths:']);
-      for (let r = 1; r < L.misses.length; ++r)
-        if (L.misses[r] > 0) keys.push([kMissColours[r], 'miss: ' + names[r] + ' (' + L.misses[r] + ')']);
-    }
-    if (L.cause && ($('ov-cylinder').checked || $('ov-hull').checked)) keys.push([kMissCause, L.cause]);
+    const keys = m.keys.map((k) => [k.colour, k.text]);
     if ($('heatmap').checked) {
       let most = 0;
       for (const p of m.compare ? [m, m.compare] : [m]) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
       keys.push([ramp(1), 'heatmap: intersection tests per pixel, log scale, 0 to ' + most +
                  (m.compare ? ', one scale for both' : '')]);
     }
-    if (m.selectedPixel >= 0)
-      keys.push([kSelection, 'selected pixel (' + m.selectedPixel % m.width + ',' + Math.floor(m.selectedPixel / m.width) + ')']);
     $('key').innerHTML = '';
     for (const [c, text] of keys) {
       const li = document.createElement('li');
@@ -480,6 +499,13 @@
       return '<td>' + (typeof v === 'number' ? v.toLocaleString('en') : v) + '</td>';
     };
     const shown = renders.filter(Boolean);
+    // What the render leaves out (rc::leftOut), as the CLI's stats and the Qt GUI's panel say
+    $('left-out').innerHTML = '';
+    for (const line of shown[0].leftOut || []) {
+      const li = document.createElement('li');
+      li.textContent = 'left out: ' + line;
+      $('left-out').appendChild(li);
+    }
     $('stats').innerHTML = (shown.length > 1 ? '<tr><td></td><td>left</td><td>right</td></tr>' : '') +
       rows.map(([label, key]) => '<tr><td>' + label + '</td>' + shown.map((s) => cell(s, key)).join('') + '</tr>').join('');
   }
@@ -493,7 +519,7 @@
   }
 
   // ---- Controls; the URL's ?scene=S&width=W&height=H&cache=C&order=O&accel=A&run=end sets them
-  for (const key of ['width', 'height', 'cache', 'order', 'accel'])
+  for (const key of ['width', 'height'])
     if (params.has(key)) $(key).value = params.get(key);
   $('open').onclick = () => open();
   $('as-written').onclick = () => { if (stop) applyStop(); };
@@ -529,13 +555,8 @@
     worker.postMessage({ type: 'select', x, y });
   };
 
-  // An NFF file dropped on the picture
-  canvas.ondragover = (e) => { e.preventDefault(); canvas.classList.add('dragging'); };
-  canvas.ondragleave = () => canvas.classList.remove('dragging');
-  canvas.ondrop = async (e) => {
-    e.preventDefault();
-    canvas.classList.remove('dragging');
-    const file = e.dataTransfer.files[0];
+  // An NFF file opened with the button or dropped on the picture
+  async function openFile(file) {
     if (!file) return;
     dropped = { name: file.name.replace(/[^A-Za-z0-9._-]/g, '_'), text: await file.text() };
     let option = [...$('scene').options].find((o) => o.value === 'dropped');
@@ -543,7 +564,19 @@
     option.textContent = file.name;
     $('scene').value = 'dropped';
     open();
+  }
+  $('file').onchange = () => { openFile($('file').files[0]); $('file').value = ''; };
+  $('open-file').onclick = () => $('file').click();
+  canvas.ondragover = (e) => { e.preventDefault(); canvas.classList.add('dragging'); };
+  canvas.ondragleave = () => canvas.classList.remove('dragging');
+  canvas.ondrop = (e) => {
+    e.preventDefault();
+    canvas.classList.remove('dragging');
+    openFile(e.dataTransfer.files[0]);
   };
+
+  // For the browser tests (tests/web): the last frame the worker sent
+  window.__viewer = { frame: () => last };
 
   startWorker();
 })();

@@ -48,7 +48,8 @@ int bench(const BenchArgs& a) {
     std::vector<Config> configs;
     for (AccelKind accel : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh}) {
         configs.push_back({accel, CacheKind::None, OrderKind::Scanline});
-        for (CacheKind cache : {CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus, CacheKind::BlockerDirections})
+        for (CacheKind cache : allCacheKinds())  // every registered cache (search/cache_registry.h)
+            if (cache != CacheKind::None)
             for (OrderKind order : {OrderKind::Scanline, OrderKind::BreadthFirst}) configs.push_back({accel, cache, order});
     }
     if (embreeAvailable()) configs.push_back({AccelKind::Embree, CacheKind::None, OrderKind::Scanline});

@@ -13,6 +13,7 @@
 #include "analysis/beam_tree.h"
 #include "analysis/median.h"
 #include "cli/commands.h"
+#include "search/cache_registry.h"
 #include "cli/cpu_clock.h"
 #include "cli/plot_script.h"
 #include "render/output_files.h"
@@ -29,7 +30,17 @@ struct CoherenceArgs {
     RenderFlags flags;
 };
 
-const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
+// The registered caches that the sweeps take (search/cache_registry.h: inSweeps)
+// (read when first asked, after every registrar has run)
+const std::vector<CacheKind>& sweptCaches() {
+    static const std::vector<CacheKind> swept = [] {
+        std::vector<CacheKind> out;
+        for (CacheKind c : allCacheKinds())
+            if (cacheInfo(c).inSweeps) out.push_back(c);
+        return out;
+    }();
+    return swept;
+}
 const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};
 
 // [coherence-defaults]
@@ -70,7 +81,7 @@ int coherence(const CoherenceArgs& a) {
     // The CSV's header and the table's preamble
     std::ostringstream csv;
     csv << "sweep,value,rays,rays_per_pixel,beam_nodes,rays_per_beam,coherence,none_seconds,none_tests";
-    for (CacheKind c : kCaches)
+    for (CacheKind c : sweptCaches())
         for (OrderKind o : kOrders)
             for (const char* m : {"hit_rate", "searches_per_ray", "searches_per_beam", "tests_ratio", "time_ratio"})
                 csv << ',' << toString(c) << '_' << toString(o) << '_' << m;
@@ -91,10 +102,10 @@ int coherence(const CoherenceArgs& a) {
         if (a.sweep == "light-radius") base.shading.sampling.lightRadius = v;
         else if (a.sweep == "gloss") base.shading.sampling.glossDegrees = v;
         else base.shading.sampling.spp = int(v);
-        std::vector<Measure> m(std::size(kCaches) * std::size(kOrders));
+        std::vector<Measure> m(sweptCaches().size() * std::size(kOrders));
         auto configuration = [&](std::size_t k) {
             RenderOptions o = base;
-            o.cache = kCaches[k / std::size(kOrders)];
+            o.cache = sweptCaches()[k / std::size(kOrders)];
             o.order = kOrders[k % std::size(kOrders)];
             return o;
         };
@@ -137,7 +148,7 @@ int coherence(const CoherenceArgs& a) {
             const double perBeam = beams.nodes ? double(n.completeSearches) / double(beams.nodes) : 0.0;
             const double tests = double(n.intersectionTests) / tests0;
             const double time = median(m[k].seconds) / t0;
-            const std::string name = std::string(toString(kCaches[k / std::size(kOrders)])) + ", " +
+            const std::string name = std::string(toString(sweptCaches()[k / std::size(kOrders)])) + ", " +
                                      std::string(toString(kOrders[k % std::size(kOrders)]));
             std::printf("  %-22s %9.3f %12.3f %13.2f %7.3f %7.3f\n", name.c_str(), hit, perRay, perBeam, tests, time);
             csv << ',' << hit << ',' << perRay << ',' << perBeam << ',' << tests << ',' << time;
@@ -153,8 +164,8 @@ int coherence(const CoherenceArgs& a) {
                 "takes at least as long, as no cache in scanline order (- : it pays at every value swept):\n\n",
                 a.sweep.c_str());
     std::printf("  %-22s %10s %10s\n", "cache, order", "tests", "time");
-    for (std::size_t k = std::size(kOrders); k < std::size(kCaches) * std::size(kOrders); ++k) {
-        const std::string name = std::string(toString(kCaches[k / std::size(kOrders)])) + ", " +
+    for (std::size_t k = std::size(kOrders); k < sweptCaches().size() * std::size(kOrders); ++k) {
+        const std::string name = std::string(toString(sweptCaches()[k / std::size(kOrders)])) + ", " +
                                  std::string(toString(kOrders[k % std::size(kOrders)]));
         const auto [tests, time] = stops[name];
         auto shown = [](double x) { return x < 0.0 ? std::string("-") : (std::ostringstream() << x).str(); };

@@ -16,26 +16,48 @@
 #include <glm/geometric.hpp>
 
 #include "analysis/beam_tree.h"
+#include "order/order_registry.h"
 #include "render/left_out.h"
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "render/report.h"
 #include "scene/builtin_scenes.h"
 #include "scene/nff_reader.h"
+#include "search/cache_registry.h"
+#include "search/search_registry.h"
 
 #include <unistd.h>
 
 namespace rc::cli {
 
 namespace {
-const std::vector<std::string> kCaches{"none", "cylinder", "blocker", "blocker+", "blocker+dir"};
-const std::vector<std::string> kOrders{"scanline", "progressive", "bfs"};
+/// "a | b (what b is) | ...": a registry's names and descriptions, for a flag's help
+template <class Entry>
+std::string choices(const Registry<Entry>& r) {
+    std::string out;
+    for (const Entry& e : r.entries()) {
+        if (!out.empty()) out += " | ";
+        out += e.name + " (" + e.description + ")";
+    }
+    return out;
+}
 
 // The signal (SIGINT, SIGTERM) that asked a render to stop, 0 when none did
 volatile std::sig_atomic_t gStopSignal = 0;
 void onStopSignal(int sig) { gStopSignal = sig; }
 
 }  // namespace
+
+void warnSkipped(const Scene& scene) {
+    for (const std::string& s : scene.skipped) std::fprintf(stderr, "raycache: warning: %s\n", s.c_str());
+    if (scene.skippedCount > long(scene.skipped.size()))
+        std::fprintf(stderr, "raycache: warning: %ld more polygons of zero area skipped\n",
+                     scene.skippedCount - long(scene.skipped.size()));
+}
+
+std::vector<std::string> cacheNames() { return cacheRegistry().names(); }
+std::vector<std::string> orderNames() { return orderRegistry().names(); }
+std::vector<std::string> searchNames() { return searchRegistry().names(); }
 
 const CLI::Validator& outputFile() {
     static const CLI::Validator v(
@@ -58,13 +80,14 @@ const CLI::Validator& outputFile() {
 void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     RenderFlags& f = *this;
     if (cacheAndOrder) {
-        c->add_option("--cache", f.cache, "none | cylinder | blocker (the paper's) | blocker+ (with RayCache's additions) | blocker+dir (blocker+, its misses answered from direction lists)")
-            ->check(CLI::IsMember(kCaches))->capture_default_str();
-        c->add_option("--order", f.order, "scanline | progressive | bfs")
-            ->check(CLI::IsMember(kOrders))->capture_default_str();
+        // The registries' names (search/cache_registry.h, order/order_registry.h)
+        c->add_option("--cache", f.cache, choices(cacheRegistry()))
+            ->check(CLI::IsMember(cacheNames()))->capture_default_str();
+        c->add_option("--order", f.order, choices(orderRegistry()))
+            ->check(CLI::IsMember(orderNames()))->capture_default_str();
     }
-    c->add_option("--accel", f.accel, "complete search: linear | grid | bvh | embree (comparison only)")
-        ->check(CLI::IsMember({"linear", "grid", "bvh", "embree"}))->capture_default_str();
+    c->add_option("--accel", f.accel, "complete search: " + choices(searchRegistry()))
+        ->check(CLI::IsMember(searchNames()))->capture_default_str();
     c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, int(NffLimits::maxResolution)));
     c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, int(NffLimits::maxResolution)));
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
@@ -148,6 +171,7 @@ struct RenderArgs {
 
 int renderCommand(const RenderArgs& a) {
     auto scene = std::make_shared<const Scene>(loadScene(a.scene, a.flags.seed));
+    warnSkipped(*scene);
     RenderOptions options = a.flags.options();
     if (options.width <= 0) options.width = scene->camera.width;
     if (options.height <= 0) options.height = scene->camera.height;
@@ -238,6 +262,7 @@ void addInfoCommand(CLI::App& app, Commands& out) {
     c->add_option("--seed", *seed, "seed of the built-in scenes' jitter");
     out.push_back({c, [scene, seed] {
     const Scene s = loadScene(*scene, *seed);
+    warnSkipped(s);
     int transparent = 0, reflective = 0;
     for (const Object& o : s.objects) {
         transparent += s.materials[o.material].kt > 0.0;

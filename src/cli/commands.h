@@ -39,6 +39,10 @@ struct RenderFlags {
     RenderOptions options() const;
 };
 
+/// Writes to stderr one warning per polygon the reader skipped (Scene::skipped), each
+/// `raycache: warning: file:line:column: message`.
+void warnSkipped(const Scene& scene);
+
 /// Checks that an output file can be written (its folder exists and is writable, and it
 /// is not a folder) when the command line is parsed, before any work.
 const CLI::Validator& outputFile();
@@ -51,5 +55,12 @@ void addBenchCommand(CLI::App& app, Commands& out);
 void addStabilityCommand(CLI::App& app, Commands& out);
 void addConvergenceCommand(CLI::App& app, Commands& out);
 void addCoherenceCommand(CLI::App& app, Commands& out);
+void addListCommand(CLI::App& app, Commands& out);
+
+/// The names of every registered cache, order and (exact) complete search: `--cache`,
+/// `--order` and `--accel` take one of them.
+std::vector<std::string> cacheNames();
+std::vector<std::string> orderNames();
+std::vector<std::string> searchNames();
 
 }  // namespace rc::cli

@@ -13,6 +13,7 @@
 #include "study/image_error.h"
 #include "render/parallel_render.h"
 #include "cli/commands.h"
+#include "search/cache_registry.h"
 #include "cli/cpu_clock.h"
 #include "cli/plot_script.h"
 #include "render/output_files.h"
@@ -34,7 +35,17 @@ struct ConvergenceArgs {
     RenderFlags flags;
 };
 
-const CacheKind kCaches[] = {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus};
+// The registered caches that the sweeps take (search/cache_registry.h: inSweeps)
+// (read when first asked, after every registrar has run)
+const std::vector<CacheKind>& sweptCaches() {
+    static const std::vector<CacheKind> swept = [] {
+        std::vector<CacheKind> out;
+        for (CacheKind c : allCacheKinds())
+            if (cacheInfo(c).inSweeps) out.push_back(c);
+        return out;
+    }();
+    return swept;
+}
 const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};
 
 double at(const std::vector<ProgressPoint>& pts, double fraction) {
@@ -92,7 +103,7 @@ int stochastic(const ConvergenceArgs& a) {
                 sm.glossDegrees, sm.glossSamples, (unsigned long long)sm.seed, a.spp, a.refSpp,
                 (unsigned long long)ref.shading.sampling.seed, refSeconds, a.repeat);
     std::vector<std::string> names;
-    for (CacheKind c : kCaches)
+    for (CacheKind c : sweptCaches())
         for (OrderKind o : kOrders) names.push_back(std::string(toString(c)) + ", " + std::string(toString(o)));
     std::vector<std::vector<double>> seconds(counts.size(), std::vector<double>(names.size(), 0.0));
     std::vector<double> error(counts.size(), 0.0);
@@ -104,7 +115,7 @@ int stochastic(const ConvergenceArgs& a) {
         for (int r = 0; r < a.repeat; ++r)
             for (std::size_t k = 0; k < names.size(); ++k) {
                 RenderOptions o = base;
-                o.cache = kCaches[k / std::size(kOrders)];
+                o.cache = sweptCaches()[k / std::size(kOrders)];
                 o.order = kOrders[k % std::size(kOrders)];
                 o.shading.sampling.spp = counts[i];
                 RenderSession session(scene, o);
@@ -118,7 +129,7 @@ int stochastic(const ConvergenceArgs& a) {
                 }
             }
         for (std::size_t k = 0; k < names.size(); ++k)
-            csv << "stochastic," << toString(kCaches[k / std::size(kOrders)]) << ','
+            csv << "stochastic," << toString(sweptCaches()[k / std::size(kOrders)]) << ','
                 << toString(kOrders[k % std::size(kOrders)]) << ',' << rays[i] << ',' << counts[i] << ','
                 << seconds[i][k] << ',' << error[i] << '\n';
     }
@@ -179,7 +190,7 @@ int convergence(const ConvergenceArgs& a) {
                 a.samples, a.repeat);
     std::printf("%-22s %8s %8s %8s %8s %8s %10s %10s\n", "cache, order", "seconds", "10%", "25%", "50%", "75%",
                 "mean/rays", "mean/time");
-    for (CacheKind c : kCaches)
+    for (CacheKind c : sweptCaches())
         for (OrderKind o : kOrders) {
             RenderOptions opt = base;
             opt.cache = c;
@@ -215,7 +226,7 @@ int convergence(const ConvergenceArgs& a) {
     // on all of them alike
     std::vector<SuperSampler> samplers;
     std::vector<std::string> names;
-    for (CacheKind c : kCaches)
+    for (CacheKind c : sweptCaches())
         for (OrderKind o : kOrders) {
             RenderOptions opt = base;
             opt.cache = c;
@@ -228,7 +239,7 @@ int convergence(const ConvergenceArgs& a) {
     std::vector<std::vector<SupersamplePoint>> curves;
     for (std::size_t k = 0; k < samplers.size(); ++k) {
         curves.push_back(samplers[k].points());
-        const CacheKind c = kCaches[k / 3];
+        const CacheKind c = sweptCaches()[k / 3];
         const OrderKind o = kOrders[k % 3];
         for (const SupersamplePoint& p : curves.back())
             csv << "supersample," << toString(c) << ',' << toString(o) << ",0," << p.spp << ',' << p.seconds << ','

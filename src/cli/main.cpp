@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     rc::cli::addStabilityCommand(app, commands);
     rc::cli::addConvergenceCommand(app, commands);
     rc::cli::addCoherenceCommand(app, commands);
+    rc::cli::addListCommand(app, commands);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -19,13 +19,18 @@ namespace rc::cli {
 
 namespace {
 struct Config {
-    const char* cache;
-    const char* order;
+    std::string cache;
+    std::string order;
 };
-// The paper's blocker cache and RayCache's blocker+ and blocker+dir side by side, in both orders
-const Config kConfigs[] = {{"none", "scanline"},    {"cylinder", "scanline"},    {"blocker", "scanline"},
-                           {"blocker+", "scanline"}, {"blocker+dir", "scanline"}, {"cylinder", "bfs"},
-                           {"blocker", "bfs"},       {"blocker+", "bfs"},         {"blocker+dir", "bfs"}};
+// No cache, then every registered cache (the paper's two and RayCache's) in scanline and in
+// breadth-first order (search/cache_registry.h)
+std::vector<Config> configurations() {
+    std::vector<Config> out;
+    for (const char* order : {"scanline", "bfs"})
+        for (const std::string& cache : cacheNames())
+            if (std::string(order) == "scanline" || cache != "none") out.push_back({cache, order});
+    return out;
+}
 // Hanrahan 1986, Table 1: "Cached" and "Cached, breadth-first" for N = 3, 4, 5
 const std::map<int, std::pair<double, double>> kPaper{{3, {0.53, 0.25}}, {4, {0.29, 0.15}}, {5, {0.20, 0.11}}};
 
@@ -68,7 +73,8 @@ int table1(const Table1Args& a) {
         // Render every configuration, interleaved, timed on one processor
         auto scene = std::make_shared<const Scene>(loadScene(spec, flags.seed));
         const int N = spec.rfind("cube:", 0) == 0 ? std::atoi(spec.c_str() + 5) : 0;
-        const int configs = int(std::size(kConfigs));
+        const std::vector<Config> kConfigs = configurations();
+        const int configs = int(kConfigs.size());
         std::vector<std::vector<double>> times(configs);
         std::vector<Counters> counts(configs);
         BeamTreeStats beams;
@@ -134,10 +140,10 @@ int table1(const Table1Args& a) {
             std::string paper = "-";
             auto it = kPaper.find(N);
             if (c == 0) paper = "1.00";
-            else if (it != kPaper.end() && std::string(kConfigs[c].cache) == "blocker")
-                paper = std::to_string(std::string(kConfigs[c].order) == "bfs" ? it->second.second : it->second.first).substr(0, 4);
-            const std::string name = std::string(kConfigs[c].cache) + ", " + kConfigs[c].order;
-            const double base = besides[std::string(kConfigs[c].order) == "bfs" ? 1 : 0];
+            else if (it != kPaper.end() && kConfigs[c].cache == "blocker")
+                paper = std::to_string(kConfigs[c].order == "bfs" ? it->second.second : it->second.first).substr(0, 4);
+            const std::string name = kConfigs[c].cache + ", " + kConfigs[c].order;
+            const double base = besides[kConfigs[c].order == "bfs" ? 1 : 0];
             const double predicted = (base + testSeconds * double(counts[c].intersectionTests)) / t0;
             const double misses = double(counts[c].misses);
             const double ownPerMiss = misses > 0.0 ? 1e9 * (t - predicted * t0) / misses : 0.0;

@@ -86,7 +86,7 @@ std::optional<std::string> makePolygon(std::vector<Vec3> vertices, std::vector<V
     const double big = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
     const double len = big > 0.0 ? big * glm::length(n / big) : 0.0;
     if (!(len > 1e-12 * extent * extent) || !std::isfinite(len))
-        return "degenerate polygon (collinear or coincident vertices)";
+        return std::string(kZeroAreaPolygon);
     n /= len;
     double offset = 0.0;
     for (const Vec3& v : vertices) offset += glm::dot(n, v);

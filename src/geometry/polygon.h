@@ -3,6 +3,7 @@
 /// \brief Planar polygons (NFF `p` and `pp`): convex or concave, any simple outline.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/ray.h"
@@ -21,9 +22,13 @@ struct Polygon {
     Sphere bound;                ///< holds every vertex (boundingSphere())
 };
 
+/// makePolygon's explanation for a polygon of zero area (collinear or coincident vertices):
+/// no ray can hit it, so a reader may skip it rather than refuse the scene.
+inline constexpr std::string_view kZeroAreaPolygon = "degenerate polygon (collinear or coincident vertices)";
+
 /// Builds a polygon from its vertices (and optional per-vertex normals). Returns an
 /// explanation instead when the polygon has fewer than three vertices, is degenerate
-/// (zero area), is not planar, crosses itself, or has a zero vertex normal.
+/// (zero area: kZeroAreaPolygon), is not planar, crosses itself, or has a zero vertex normal.
 std::optional<std::string> makePolygon(std::vector<Vec3> vertices, std::vector<Vec3> normals,
                                        Polygon& out);
 

@@ -2,40 +2,32 @@
 
 #include <algorithm>
 
-#include "order/breadth_first_order.h"
-#include "order/progressive_order.h"
-#include "order/scanline_order.h"
+#include "order/order_registry.h"
 
 namespace rc {
 
 std::string_view toString(OrderKind k) {
-    switch (k) {
-        case OrderKind::Scanline: return "scanline";
-        case OrderKind::Progressive: return "progressive";
-        case OrderKind::BreadthFirst: return "bfs";
-    }
-    return "?";
+    const auto& r = orderRegistry();
+    const auto i = std::size_t(k);
+    return i < r.size() ? std::string_view(r[i].name) : std::string_view("?");
 }
 
 std::optional<OrderKind> parseOrderKind(std::string_view s) {
-    for (OrderKind k : {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst})
-        if (toString(k) == s) return k;
-    return std::nullopt;
+    const int i = orderRegistry().indexOf(s);
+    if (i < 0) return std::nullopt;
+    return OrderKind(i);
+}
+
+std::vector<OrderKind> allOrderKinds() {
+    std::vector<OrderKind> out;
+    for (std::size_t i = 0; i < orderRegistry().size(); ++i) out.push_back(OrderKind(i));
+    return out;
 }
 
 std::unique_ptr<RayOrder> makeOrder(OrderKind kind, int width, int rowBegin, int rowEnd, int band, int samples,
                                     bool cheapTests, RayOrder::EyeMaker makeEye) {
-    samples = std::max(1, samples);
-    switch (kind) {
-        case OrderKind::Scanline:
-            return std::make_unique<ScanlineOrder>(width * rowBegin, width * rowEnd, samples, std::move(makeEye));
-        case OrderKind::Progressive:
-            return std::make_unique<ProgressiveOrder>(width, rowBegin, rowEnd, band, samples, std::move(makeEye));
-        case OrderKind::BreadthFirst:
-            return std::make_unique<BreadthFirstOrder>(width, rowBegin, rowEnd, band, samples, cheapTests,
-                                                       std::move(makeEye));
-    }
-    return nullptr;
+    return orderRegistry()[std::size_t(kind)].make(width, rowBegin, rowEnd, band, std::max(1, samples), cheapTests,
+                                                   std::move(makeEye));
 }
 
 }  // namespace rc

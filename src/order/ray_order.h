@@ -19,8 +19,11 @@ enum class OrderKind {
     Progressive,  ///< all eye rays, then all rays of depth 2, ... (the paper's conclusion)
     BreadthFirst, ///< seed fill of each ray-tree path: one coherent region after another
 };
+/// The registered name of an order (order/order_registry.h; "?" for a kind never registered).
 std::string_view toString(OrderKind k);
 std::optional<OrderKind> parseOrderKind(std::string_view s);
+/// Every registered order, in the order menus list them.
+std::vector<OrderKind> allOrderKinds();
 
 /// The next ray to trace and how far its lookup may go. The task stays where the order
 /// keeps it, unmoved until the order hears what became of it (committed() or

@@ -396,8 +396,17 @@ private:
             if (withNormals) normals.push_back(vec3("polygon patch normal", i));
         }
         Polygon poly;
-        if (auto err = makePolygon(std::move(vertices), std::move(normals), poly))
-            fail(kw, *err);
+        if (auto err = makePolygon(std::move(vertices), std::move(normals), poly)) {
+            if (*err != kZeroAreaPolygon) fail(kw, *err);
+            // No ray can hit a polygon of zero area: it is left out, and said so
+            ++scene_.skippedCount;
+            if (scene_.skipped.size() < NffLimits::maxSkippedNamed)
+                scene_.skipped.push_back(
+                    SceneError(file_, kw.line, kw.column,
+                               cat(item, " of zero area skipped (collinear or coincident vertices: no ray can hit it)"))
+                        .what());
+            return;
+        }
         scene_.addPolygon(std::move(poly), materialForPrimitive());
     }
 
@@ -446,6 +455,9 @@ Scene parseNff(std::string_view text, const std::string& fileName, long maxPrimi
     if (text.size() > NffLimits::maxFileBytes)
         throw SceneError(fileName, 0, 0,
                          cat("input is larger than ", std::to_string(NffLimits::maxFileBytes), " bytes"));
+    // A UTF-8 byte-order mark (some editors write one) is not part of the text
+    constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+    if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) text.remove_prefix(kByteOrderMark.size());
     Scene scene = Parser(text, fileName, maxPrimitives).parse();
     scene.name = std::filesystem::path(fileName).stem().string();
     return scene;

@@ -20,7 +20,12 @@
 ///   convex or concave).
 ///
 /// A primitive that comes before any `f` gets a white diffuse material. Everything
-/// else (`tpp`, `tp`, ...) is rejected. Every error is an rc::SceneError whose what()
+/// else (`tpp`, `tp`, ...) is rejected. A polygon of zero area (collinear or coincident
+/// vertices, as SPD's coarse teapot writes at its poles) is skipped, not refused: no ray
+/// can hit it. Each one is named in Scene::skipped as `file:line:column: message` (the
+/// `p` or `pp` keyword) and counted in Scene::skippedCount. A UTF-8 byte-order mark at
+/// the start of the file is skipped too; columns count from the byte after it, as they do
+/// in the page, whose text decoder drops it. Every error is an rc::SceneError whose what()
 /// is `file:line:column: message`; lines and columns count from 1, columns in bytes.
 /// An error "at end of file" points just past the file's last token (1:1 in an empty
 /// file). No input can make the reader crash, hang or allocate more than a small
@@ -44,6 +49,8 @@ struct NffLimits {
     static constexpr long maxResolution = 16384;
     /// Largest magnitude of any number (so that squares of coordinates stay finite).
     static constexpr double maxMagnitude = 1e100;
+    /// Most skipped polygons named in Scene::skipped (the rest are only counted).
+    static constexpr std::size_t maxSkippedNamed = 100;
     /// Largest input, in bytes (1 GiB).
     static constexpr std::size_t maxFileBytes = std::size_t(1) << 30;
 };

@@ -51,6 +51,11 @@ struct Scene {
     std::vector<TruncatedCone> cones;
     std::vector<Object> objects;
     Sphere bound;  ///< holds every object; set by finalize()
+    /// What the reader skipped because no ray can hit it (a polygon of zero area), one
+    /// `file:line:column: message` each, in file order; the first few only (the count is
+    /// `skippedCount`), so that a file of nothing else stays small in memory.
+    std::vector<std::string> skipped;
+    long skippedCount = 0;
 
     /// Adds a material; returns its index.
     int addMaterial(const Material& m) {

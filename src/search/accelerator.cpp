@@ -1,33 +1,23 @@
 #include "search/accelerator.h"
 
-#include "search/bounding_volume_hierarchy.h"
-#include "search/embree_search.h"
-#include "search/linear_search.h"
-#include "search/uniform_grid.h"
+#include "search/search_registry.h"
 
 namespace rc {
 
 std::string_view toString(AccelKind k) {
-    switch (k) {
-        case AccelKind::Linear: return "linear";
-        case AccelKind::Grid: return "grid";
-        case AccelKind::Bvh: return "bvh";
-        case AccelKind::Embree: return "embree";
-    }
-    return "?";
+    const auto& r = searchRegistry();
+    const auto i = std::size_t(k);
+    return i < r.size() ? std::string_view(r[i].name) : std::string_view("?");
 }
 
 std::optional<AccelKind> parseAccelKind(std::string_view s) {
-    for (AccelKind k : {AccelKind::Linear, AccelKind::Grid, AccelKind::Bvh, AccelKind::Embree})
-        if (toString(k) == s) return k;
-    return std::nullopt;
+    const int i = searchRegistry().indexOf(s);
+    if (i < 0) return std::nullopt;
+    return AccelKind(i);
 }
 
 std::unique_ptr<CompleteSearch> makeCompleteSearch(AccelKind kind, const Scene& scene) {
-    if (kind == AccelKind::Grid) return std::make_unique<UniformGrid>(scene);
-    if (kind == AccelKind::Bvh) return std::make_unique<BoundingVolumeHierarchy>(scene);
-    if (kind == AccelKind::Embree) return std::make_unique<EmbreeSearch>(scene);
-    return std::make_unique<LinearSearch>(scene);
+    return searchRegistry()[std::size_t(kind)].make(scene);
 }
 
 }  // namespace rc

@@ -5,28 +5,26 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "search/aside_blocker_cache.h"
-#include "search/blocker_cache.h"
-#include "search/cylinder_cache.h"
-#include "search/no_cache.h"
+#include "search/cache_registry.h"
 
 namespace rc {
 
 std::string_view toString(CacheKind k) {
-    switch (k) {
-        case CacheKind::None: return "none";
-        case CacheKind::Cylinder: return "cylinder";
-        case CacheKind::Blocker: return "blocker";
-        case CacheKind::BlockerPlus: return "blocker+";
-        case CacheKind::BlockerDirections: return "blocker+dir";
-    }
-    return "?";
+    const auto& r = cacheRegistry();
+    const auto i = std::size_t(k);
+    return i < r.size() ? std::string_view(r[i].name) : std::string_view("?");
+}
+
+std::vector<CacheKind> allCacheKinds() {
+    std::vector<CacheKind> out;
+    for (std::size_t i = 0; i < cacheRegistry().size(); ++i) out.push_back(CacheKind(i));
+    return out;
 }
 
 std::optional<CacheKind> parseCacheKind(std::string_view s) {
-    for (CacheKind k : allCacheKinds())
-        if (toString(k) == s) return k;
-    return std::nullopt;
+    const int i = cacheRegistry().indexOf(s);
+    if (i < 0) return std::nullopt;
+    return CacheKind(i);
 }
 
 CacheStrategy::CacheStrategy(const Scene& scene, const CompleteSearch& search)
@@ -53,20 +51,7 @@ MissReason CacheStrategy::unusable(const Query& q, const CacheEntry& e) {
 
 std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
                                             const CompleteSearch& search) {
-    switch (kind) {
-        case CacheKind::None: return std::make_unique<NoCache>(scene, search);
-        case CacheKind::Cylinder: return std::make_unique<CylinderCache>(scene, search);
-        case CacheKind::Blocker: return std::make_unique<BlockerCache>(scene, search, BlockerCache::Variant::Paper);
-        case CacheKind::BlockerPlus:
-        case CacheKind::BlockerDirections: {
-            const auto variant =
-                kind == CacheKind::BlockerPlus ? BlockerCache::Variant::Plus : BlockerCache::Variant::Directions;
-            // In front of a cheap search, whole paths step aside where the cache does not pay
-            if (search.cheap()) return std::make_unique<AsideBlockerCache>(scene, search, variant);
-            return std::make_unique<BlockerCache>(scene, search, variant);
-        }
-    }
-    return nullptr;
+    return cacheInfo(kind).make(scene, search);
 }
 
 }  // namespace rc

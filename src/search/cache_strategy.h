@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "search/blocker_lists.h"
 #include "search/cache_tree.h"
@@ -15,20 +16,19 @@
 
 namespace rc {
 
-/// Which cache answers ray queries.
-enum class CacheKind {
+/// Which cache answers ray queries: an index into the cache registry (search/cache_registry.h),
+/// which holds the built-in ones below in this order and then any a registrar adds.
+enum class CacheKind : int {
     None,         ///< every ray searches
     Cylinder,     ///< Speer, DeRose and Barsky's cylinder of safety
     Blocker,      ///< Hanrahan's blocker lists, with RayCache's readings of the paper (BlockerCache)
     BlockerPlus,  ///< blocker lists with RayCache's additions (`blocker+`)
     BlockerDirections,  ///< blocker+ whose misses test the objects listed in their direction (`blocker+dir`)
 };
+/// The registered name of a cache ("?" for a kind never registered).
 std::string_view toString(CacheKind k);
-/// Every cache kind, in the order tables list them.
-constexpr std::array<CacheKind, 5> allCacheKinds() {
-    return {CacheKind::None, CacheKind::Cylinder, CacheKind::Blocker, CacheKind::BlockerPlus,
-            CacheKind::BlockerDirections};
-}
+/// Every registered cache kind, in the order tables list them.
+std::vector<CacheKind> allCacheKinds();
 std::optional<CacheKind> parseCacheKind(std::string_view s);
 
 /// How far a lookup may go.
@@ -101,7 +101,7 @@ protected:
     double slack_;  ///< a few ulps of the scene's size: shrinks cylinders and cones
 };
 
-/// Makes the strategy of a kind.
+/// Makes the strategy of a kind (its registry entry's factory).
 std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
                                             const CompleteSearch& search);
 

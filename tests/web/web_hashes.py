@@ -22,12 +22,16 @@ import urllib.parse
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from browser import Browser  # noqa: E402
 
-CACHES = ["none", "cylinder", "blocker", "blocker+", "blocker+dir"]
-ORDERS = ["scanline", "progressive", "bfs"]
 BUILTINS = ["cube:3", "balls:2", "glass", "fill", "pair", "trio"]
 
 HASH = "document.getElementById('image-hash').textContent"
 CAPTION_ERROR = "document.getElementById('caption').className === 'error' && document.getElementById('caption').textContent"
+
+
+def registered(cli, what):
+    """The names in one of the core's registries, as `raycache list WHAT --json` gives them."""
+    out = subprocess.run([cli, "list", what, "--json"], capture_output=True, text=True, check=True).stdout
+    return [e["name"] for e in json.loads(out) if not e.get("comparison_only")]
 
 
 def native(cli, scene, width, height, cache, order, extra=()):
@@ -84,6 +88,7 @@ def check_dropped(browser, a):
 
 
 def check_hashes(a):
+    caches, orders = registered(a.cli, "caches"), registered(a.cli, "orders")
     scenes = BUILTINS + ["scenes/" + p.name for p in sorted(pathlib.Path(a.scenes_dir).glob("*.nff"))]
     browser = Browser(a.chromium)
     matched, wrong = 0, []
@@ -91,8 +96,8 @@ def check_hashes(a):
         for scene in scenes:
             native_scene = str(pathlib.Path(a.scenes_dir) / scene[len("scenes/"):]) if scene.startswith("scenes/") else scene
             first = True
-            for cache in CACHES:
-                for order in ORDERS:
+            for cache in caches:
+                for order in orders:
                     expected = native(a.cli, native_scene, a.width, a.height, cache, order, ["--hash", "-q"]).strip()
                     if first:
                         browser.open(page_url(a.page, scene, a.width, a.height, cache, order))
@@ -110,9 +115,9 @@ def check_hashes(a):
     for w in wrong + dropped:
         print("DIFFERENT", w)
     print(f"{matched} of {matched + len(wrong)} web hashes equal the native ones "
-          f"({len(scenes)} scenes x {len(CACHES)} caches x {len(ORDERS)} orders at {a.width}x{a.height})")
+          f"({len(scenes)} scenes x {len(caches)} caches x {len(orders)} orders at {a.width}x{a.height})")
     print("dropped files: " + ("as native" if not dropped else f"{len(dropped)} wrong"))
-    return 0 if not wrong and not dropped and matched == len(scenes) * len(CACHES) * len(ORDERS) else 1
+    return 0 if not wrong and not dropped and matched == len(scenes) * len(caches) * len(orders) else 1
 
 
 def web_seconds(browser):
