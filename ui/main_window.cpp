@@ -27,6 +27,7 @@
 #include <QVBoxLayout>
 
 #include "cache_tree_panel.h"
+#include "geometry/student_code.h"
 #include "event_log_panel.h"
 #include "frame_log.h"
 #include "heatmap_builder.h"
@@ -53,7 +54,8 @@ QString scenesFolder() {
 }
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle("RayCache — caching and breadth-first search (Hanrahan 1986)");
+    setWindowTitle(QString("RayCache — caching and breadth-first search (Hanrahan 1986)") +
+                   QString::fromStdString(rc::studentSummary().empty() ? "" : " — " + rc::studentSummary()));
     options_.cache = rc::CacheKind::Blocker;
     options_.order = rc::OrderKind::BreadthFirst;
     reportError_ = [this](const QString& title, const QString& message) {
