@@ -51,8 +51,10 @@ namespace {
 
 // The oracle's nearest hit, with RayCache's rules: hits at tmax or beyond do not count, a
 // ray leaving the surface it starts on cannot meet it again, a ray entering it meets it at
-// its far root; equal distances go to the lower id. Spheres only.
-rc::Answer oracle(const rc::Scene& s, const rc::Query& q) {
+// its far root; equal distances go to the lower id. Spheres only. `ambiguous`, if given,
+// is set when a root lies within rounding of 0 or of tmax (a ray starting on the surface of
+// another sphere, a twin of its own): in or out is then a matter of the last bit.
+rc::Answer oracle(const rc::Scene& s, const rc::Query& q, bool* ambiguous = nullptr) {
     long double best = INFINITY;
     int object = -1;
     for (int id = s.size() - 1; id >= 0; --id) {  // downwards: a tie goes to the lower id
@@ -61,6 +63,9 @@ rc::Answer oracle(const rc::Scene& s, const rc::Query& q) {
         const tutorial::OracleRoots r = tutorial::oracleRoots(q.ray, s.spheres[s.objects[id].index]);
         if (!r.hit) continue;
         const long double t = id == q.origin.object ? r.t1 : r.t0 > 0 ? r.t0 : r.t1;
+        if (ambiguous && id != q.origin.object)
+            for (long double root : {r.t0, r.t1})
+                if (std::abs(root) < 1e-9L || std::abs(root - (long double)q.tmax) < 1e-9L * q.tmax) *ambiguous = true;
         if (t > 0 && t < (long double)q.tmax && t <= best) best = t, object = id;
     }
     return {object, object < 0 ? rc::kNoHit : double(best)};
@@ -79,14 +84,19 @@ bool agree(const rc::Answer& got, const rc::Answer& want) {
 
 TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutorial01]") {
     tutorial::Random rnd(1986);
-    int hits = 0, cases = 0;
+    int hits = 0, cases = 0, skipped = 0;
     for (int scene = 0; scene < 40; ++scene) {
         const rc::Scene s = randomScene(rnd, 5 + rnd.index(60), scene % 4 == 0);
         for (int i = 0; i < 500; ++i) {
             const rc::Query q = randomQuery(rnd, s);
             rc::Counters n;
-            const rc::Answer want = oracle(s, q);
+            bool ambiguous = false;
+            const rc::Answer want = oracle(s, q, &ambiguous);
             const rc::Answer got = yours(s, q, n);
+            if (ambiguous) {
+                ++skipped;
+                continue;
+            }
             INFO(std::setprecision(17) << "scene " << scene << " ray " << i << ": origin (" << q.ray.o.x << ", " << q.ray.o.y << ", "
                           << q.ray.o.z << ") direction (" << q.ray.d.x << ", " << q.ray.d.y << ", " << q.ray.d.z
                           << ") from object " << q.origin.object << (q.origin.inside ? " (inside it)" : " (outside it)")
@@ -101,8 +111,10 @@ TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutoria
             ++cases;
         }
     }
-    // The cases are worth something only if many rays hit
+    // The cases are worth something only if many rays hit, and few are left out (rays
+    // leaving a sphere that has a twin start on the twin's surface: about 5% of the cases)
     CHECK(hits > cases / 4);
+    CHECK(skipped < cases / 10);
 }
 
 TEST_CASE("standardAlgorithm finds what the eye sees in cube:3", "[tutorial01]") {
