@@ -59,7 +59,8 @@ rc::Answer oracle(const rc::Scene& s, const rc::Query& q, bool* ambiguous = null
     int object = -1;
     for (int id = s.size() - 1; id >= 0; --id) {  // downwards: a tie goes to the lower id
         REQUIRE(s.objects[id].shape == rc::Shape::Sphere);
-        if (id == q.origin.object && !q.origin.inside) continue;
+        const bool leaving = id == q.origin.object && !q.origin.inside;
+        if (leaving) continue;
         const tutorial::OracleRoots r = tutorial::oracleRoots(q.ray, s.spheres[s.objects[id].index]);
         if (!r.hit) continue;
         const long double t = id == q.origin.object ? r.t1 : r.t0 > 0 ? r.t0 : r.t1;
