@@ -940,7 +940,8 @@ void MainWindow::refresh() {
         rayTree_->showPixel(s, pixel);
         if (const auto f = rc::RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
     }
-    statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
+    statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : "") +
+                             QString::fromStdString(rc::cannotDrawYet().empty() ? "" : " — " + rc::cannotDrawYet()));
     updateControls();
     if (compareChoice_) refreshCompare();
     viewsChanged();

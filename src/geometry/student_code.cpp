@@ -21,6 +21,12 @@ const std::vector<StudentFunction>& studentFunctions() {
     return list;
 }
 
+bool isStudents(int tutorial) {
+    for (const StudentFunction& f : studentFunctions())
+        if (f.tutorial == tutorial) return true;
+    return false;
+}
+
 std::string studentSummary() {
     std::ostringstream out;
     for (const StudentFunction& f : studentFunctions())

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// \brief Which functions of this build are a student's: the tutorials' exercises are holes
-/// in RayCache itself (tutorials/tutorials.md). A student build (`cmake --preset student`)
+/// in RayCache itself (docs/pages/tutorials.md). A student build (`cmake --preset student`)
 /// compiles each open tutorial's `tutorials/NN-name/exercise.cpp` in place of the file that
 /// holds the function, so the CLI, the GUI and the tutorials' pictures run the student's
 /// code. A stub, as shipped, says so by calling notYet().
@@ -19,6 +19,9 @@ struct StudentFunction {
 /// The functions of this build that come from tutorials/NN-name/exercise.cpp (empty in the
 /// instructor's build, `RAYCACHE_STUDENT=OFF`).
 const std::vector<StudentFunction>& studentFunctions();
+
+/// Is tutorial `tutorial`'s function the student's in this build?
+bool isStudents(int tutorial);
 
 /// "student build: rc::Hull (tutorial 03), ..." or "" in the instructor's build; for
 /// window titles and reports.

@@ -155,4 +155,9 @@ TEST_CASE("standardAlgorithm finds what the eye sees in cube:3", "[tutorial01]")
                                        << " at t = " << got.t);
             REQUIRE(agree(got, want));
         }
+    // What the renderer's pictures make of your loop: the reference picture, pixel for pixel
+    const int off = tutorial::differingPixels(path, TUTORIAL_DIR "/tutorial_01_expected.png");
+    INFO("your picture " << path << " and the reference " TUTORIAL_DIR "/tutorial_01_expected.png differ in " << off
+                         << " pixel(s) (-1: not comparable)");
+    REQUIRE(off == 0);
 }

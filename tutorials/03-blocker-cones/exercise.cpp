@@ -1,5 +1,6 @@
-// The convex hull of two spheres (the blocker cone's solid): tutorial 03's hole. A student
-// build compiles tutorials/03-blocker-cones/exercise.cpp in place of this file.
+/// \file
+/// \brief The convex hull of two spheres (the solid of a blocker cone): rc::Hull, tutorial 03's hole. A student build
+/// compiles tutorials/03-blocker-cones/exercise.cpp in place of this file.
 #include <algorithm>
 #include <cmath>
 

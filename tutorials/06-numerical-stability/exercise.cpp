@@ -1,5 +1,6 @@
-// The stable ray-sphere roots: tutorial 06's hole. A student build compiles
-// tutorials/06-numerical-stability/exercise.cpp in place of this file.
+/// \file
+/// \brief The stable ray-sphere roots, rc::sphereRootsStable(): tutorial 06's hole. A student build
+/// compiles tutorials/06-numerical-stability/exercise.cpp in place of this file.
 #include <cmath>
 #include <utility>
 
