@@ -39,15 +39,48 @@ double angleBetween(const rc::Vec3& a, const rc::Vec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
-// The check's own empty cone: the same definition, written independently
+// The check's oracle for the empty cone. For each sphere, the ray from the apex is turned
+// from the axis towards the sphere's centre, in the plane of the two, until it meets the
+// sphere: bisection in long double on the angle, a ray meeting the sphere when its distance
+// from the centre (a cross product, no cancellation) is at most the radius. The cone opens
+// to the least such angle. No formula for the angle of the tangent.
 double coneAngle(const rc::Vec3& apex, const rc::Vec3& axis, const std::vector<rc::Sphere>& spheres) {
-    double angle = rc::kNoHit;
+    using L = long double;
+    struct V {
+        L x, y, z;
+    };
+    auto dot = [](const V& a, const V& b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+    auto cross = [](const V& a, const V& b) {
+        return V{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    };
+    const L al = std::sqrt(L(axis.x) * axis.x + L(axis.y) * axis.y + L(axis.z) * axis.z);
+    const V a{axis.x / al, axis.y / al, axis.z / al};
+    L angle = INFINITY;
     for (const rc::Sphere& s : spheres) {
-        const double dist = glm::length(s.c - apex);
-        if (dist <= s.r) return -1.0;
-        angle = std::min(angle, angleBetween(axis, s.c - apex) - std::asin(s.r / dist));
+        const V v{L(s.c.x) - apex.x, L(s.c.y) - apex.y, L(s.c.z) - apex.z};
+        const L dist = std::sqrt(dot(v, v)), r = s.r;
+        if (dist <= r) return -1.0;  // the apex is inside: every ray meets it
+        // w: the unit vector in the plane of the axis and the centre, across the axis
+        V w{v.x - dot(v, a) * a.x, v.y - dot(v, a) * a.y, v.z - dot(v, a) * a.z};
+        L wl = std::sqrt(dot(w, w));
+        if (wl < 1e-30L) {  // the centre on the axis's line: any direction across it
+            w = std::abs(a.x) < 0.9L ? cross(a, V{1, 0, 0}) : cross(a, V{0, 1, 0});
+            wl = std::sqrt(dot(w, w));
+        }
+        w = {w.x / wl, w.y / wl, w.z / wl};
+        auto meets = [&](L theta) {
+            const V u{std::cos(theta) * a.x + std::sin(theta) * w.x, std::cos(theta) * a.y + std::sin(theta) * w.y,
+                      std::cos(theta) * a.z + std::sin(theta) * w.z};
+            const V c = cross(v, u);
+            return dot(v, u) > 0 && dot(c, c) <= r * r;
+        };
+        if (meets(0)) return -1.0;  // the ray along the axis meets it
+        const L alpha = std::atan2(std::sqrt(dot(cross(v, a), cross(v, a))), dot(v, a));
+        L lo = 0, hi = alpha;  // misses at lo, meets at hi (straight at the centre)
+        for (int k = 0; k < 100; ++k) (meets((lo + hi) / 2) ? hi : lo) = (lo + hi) / 2;
+        angle = std::min(angle, lo);
     }
-    return angle;
+    return double(angle);
 }
 
 // The complete search: the nearest sphere the ray hits, ties to the lower index
