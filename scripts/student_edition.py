@@ -114,6 +114,13 @@ def hole_files(root):
     return out
 
 
+def holes(root):
+    """(tutorial, file under src/) of each hole, as src/CMakeLists.txt lists them
+    (RAYCACHE_HOLES): the file a student build replaces with the tutorial's exercise.cpp."""
+    text = open(os.path.join(root, 'src/CMakeLists.txt'), encoding='utf-8').read()
+    return re.findall(r'"(\d\d)\|([^|"]+)\|[^"]*"', text)
+
+
 def norm(line):
     return ' '.join(line.split())
 
@@ -170,11 +177,11 @@ def leaks(root, edition, open_tutorials):
 def inject(root, edition):
     """Put the instructor's solutions into the edition's holes: each open hole's exercise.cpp
     becomes the solution, as a student who solved it would have written it."""
-    for f, text in hole_files(root).items():
-        for nn, *_ in regions(text)[1]:
-            tut = [d for d in os.listdir(os.path.join(edition, 'tutorials')) if d.startswith(nn + '-')][0]
-            with open(os.path.join(edition, 'tutorials', tut, 'exercise.cpp'), 'w', encoding='utf-8') as o:
-                o.write(stubbed(text, []))
+    for nn, f in holes(root):
+        text = open(os.path.join(root, 'src', f), encoding='utf-8').read()
+        tut = [d for d in os.listdir(os.path.join(edition, 'tutorials')) if d.startswith(nn + '-')][0]
+        with open(os.path.join(edition, 'tutorials', tut, 'exercise.cpp'), 'w', encoding='utf-8') as o:
+            o.write(stubbed(text, []))
     # The tutorials that are not holes: the instructor's solution file is the exercise
     sol = os.path.join(root, 'tutorials/instructor/solutions')
     for name in sorted(os.listdir(sol)):

@@ -31,7 +31,9 @@ cmake --preset default -DRAYCACHE_GUI=OFF -DRAYCACHE_WEB=OFF -DRAYCACHE_DOCS=OFF
 tutorials=$(ls -d tutorials/0*-* | sed 's|tutorials/||')
 targets=(raycache)
 for t in $tutorials; do targets+=("tutorial_${t:0:2}_exercise"); done
-build() { cmake --build build -j "$jobs" --target "$@" >/dev/null; }
+build() {
+  cmake --build build -j "$jobs" --target "$@" >"$work/build.log" 2>&1 || { tail -40 "$work/build.log" >&2; return 1; }
+}
 
 # Runs tutorial NN's check; prints SOLVED or NOT YET and exits 0 when it says `want`
 verdict() {
