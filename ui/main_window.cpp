@@ -31,6 +31,7 @@
 #include "view/compare_caption.h"
 #include "view/scene_list.h"
 #include "cache_tree_panel.h"
+#include "geometry/student_code.h"
 #include "event_log_panel.h"
 #include "frame_log.h"
 #include "heatmap_builder.h"
@@ -57,7 +58,8 @@ QString scenesFolder() {
 }
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle("RayCache — caching and breadth-first search (Hanrahan 1986)");
+    setWindowTitle(QString("RayCache — caching and breadth-first search (Hanrahan 1986)") +
+                   QString::fromStdString(rc::studentSummary().empty() ? "" : " — " + rc::studentSummary()));
     options_.cache = rc::CacheKind::Blocker;
     options_.order = rc::OrderKind::BreadthFirst;
     reportError_ = [this](const QString& title, const QString& message) {
@@ -922,7 +924,8 @@ void MainWindow::refresh() {
         rayTree_->showPixel(s, pixel);
         if (const auto f = rc::RayFocus::of(*s, selection_)) rayTree_->setCurrentEvent(f->event);
     }
-    statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : ""));
+    statusBar()->showMessage(QString("%1 steps%2").arg(s->session().steps()).arg(s->session().done() ? ", done" : "") +
+                             QString::fromStdString(rc::cannotDrawYet().empty() ? "" : " — " + rc::cannotDrawYet()));
     updateControls();
     if (compareChoice_) refreshCompare();
     viewsChanged();

@@ -17,6 +17,7 @@
 
 #include "analysis/beam_tree.h"
 #include "order/order_registry.h"
+#include "geometry/student_code.h"
 #include "render/left_out.h"
 #include "render/output_files.h"
 #include "render/parallel_render.h"
@@ -205,6 +206,11 @@ int renderCommand(const RenderArgs& a) {
     if (gStopSignal != 0) {
         std::fprintf(stderr, "raycache: interrupted (%s); no file written\n", strsignal(gStopSignal));
         return 128 + gStopSignal;
+    }
+    // A student build whose complete search is still tutorial 01's stub has drawn nothing
+    if (const std::string notYet = cannotDrawYet(); !notYet.empty()) {
+        std::fprintf(stderr, "raycache: %s\n", notYet.c_str());
+        return 1;
     }
 
     if (!a.out.empty() || a.hash) {

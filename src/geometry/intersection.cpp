@@ -7,25 +7,7 @@
 
 namespace rc {
 
-SphereRoots sphereRootsStable(const Ray& ray, const Sphere& s) {
-    // [stable-roots]
-    // Offset of the origin from the centre, and its projection on the ray
-    const Vec3 f = ray.o - s.c;
-    const double b = glm::dot(f, ray.d);
-    // The discriminant from the perpendicular offset, not from b*b - c
-    const Vec3 l = f - b * ray.d;
-    const double disc = s.r * s.r - glm::dot(l, l);
-    if (disc < 0.0) return {};
-    // q has the sign of -b, so -b and the square root never cancel
-    const double root = std::sqrt(disc);
-    const double q = (b > 0.0) ? -b - root : -b + root;
-    const double c = glm::dot(f, f) - s.r * s.r;
-    double t0 = (q != 0.0) ? c / q : 0.0;
-    double t1 = q;
-    if (t0 > t1) std::swap(t0, t1);
-    return {true, t0, t1};
-    // [stable-roots]
-}
+// sphereRootsStable(): geometry/stable_roots.cpp (tutorial 06's hole)
 
 SphereRoots sphereRootsTextbook(const Ray& ray, const Sphere& s) {
     // [textbook-roots]

@@ -43,6 +43,7 @@ V3<T> cross(const V3<T>& a, const V3<T>& b) {
 // reference), or taking |d| = 1 as intersection.cpp does (`unit`)
 template <class T>
 bool stableRoots(const V3<T>& o, const V3<T>& d, const V3<T>& c, T r, T& t0, T& t1, bool unit = false) {
+    // BEGIN SOLUTION 06
     const V3<T> f = sub(o, c);
     const T a = unit ? T(1) : dot(d, d);
     const T b = dot(f, d);
@@ -57,6 +58,12 @@ bool stableRoots(const V3<T>& o, const V3<T>& d, const V3<T>& c, T r, T& t0, T& 
     t1 = q / a;
     if (t0 > t1) std::swap(t0, t1);
     return true;
+    // END SOLUTION
+    // BEGIN STUB
+    // // Tutorial 06's answer in any precision: not in the student edition while 06 is open
+    // (void)o, (void)d, (void)c, (void)r, (void)t0, (void)t1, (void)unit;
+    // return false;
+    // END STUB
 }
 
 // The textbook roots -b +- sqrt(b^2 - c) for a unit d

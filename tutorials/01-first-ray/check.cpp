@@ -1,5 +1,7 @@
-// Tutorial 01's check: tutorial::nearestHit against the library's complete search,
-// rc::LinearSearch, on seeded random scenes and rays.
+// Tutorial 01's check: rc::standardAlgorithm (your tutorials/01-first-ray/exercise.cpp in a
+// student build, where LinearSearch runs it) against an independent oracle: every sphere's
+// roots found by bisection in long double (oracle_roots.h), the nearest in front taken, on
+// seeded random scenes and rays and on cube:3's eye rays.
 #include <iomanip>
 #include <catch2/catch.hpp>
 
@@ -8,9 +10,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
 #include "scene/builtin_scenes.h"
-#include "search/linear_search.h"
+#include "search/standard_algorithm.h"
+#include "oracle_roots.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -45,42 +47,79 @@ rc::Query randomQuery(tutorial::Random& rnd, const rc::Scene& s) {
 
 }  // namespace
 
-// Your nearestHit, asked an rc::Query and answering as an rc::Answer (the exercise's header
-// leaves RayCache's search/query.h out: it holds the library's own loop body)
-static rc::Answer yours(const rc::Scene& s, const rc::Query& q) {
-    const tutorial::Answer a = tutorial::nearestHit(s, tutorial::Query{q.ray, q.tmax, q.origin});
-    return {a.object, a.t};
+namespace {
+
+// The oracle's nearest hit, with RayCache's rules: hits at tmax or beyond do not count, a
+// ray leaving the surface it starts on cannot meet it again, a ray entering it meets it at
+// its far root; equal distances go to the lower id. Spheres only. `ambiguous`, if given,
+// is set when a root lies within rounding of 0 or of tmax (a ray starting on the surface of
+// another sphere, a twin of its own): in or out is then a matter of the last bit.
+rc::Answer oracle(const rc::Scene& s, const rc::Query& q, bool* ambiguous = nullptr) {
+    long double best = INFINITY;
+    int object = -1;
+    for (int id = s.size() - 1; id >= 0; --id) {  // downwards: a tie goes to the lower id
+        REQUIRE(s.objects[id].shape == rc::Shape::Sphere);
+        const bool leaving = id == q.origin.object && !q.origin.inside;
+        if (leaving) continue;
+        const tutorial::OracleRoots r = tutorial::oracleRoots(q.ray, s.spheres[s.objects[id].index]);
+        if (!r.hit) continue;
+        const long double t = id == q.origin.object ? r.t1 : r.t0 > 0 ? r.t0 : r.t1;
+        if (ambiguous && id != q.origin.object)
+            for (long double root : {r.t0, r.t1})
+                if (std::abs(root) < 1e-9L || std::abs(root - (long double)q.tmax) < 1e-9L * q.tmax) *ambiguous = true;
+        if (t > 0 && t < (long double)q.tmax && t <= best) best = t, object = id;
+    }
+    return {object, object < 0 ? rc::kNoHit : double(best)};
 }
 
-TEST_CASE("nearestHit agrees with the complete search on random scenes", "[tutorial01]") {
+// Your loop, and the tests it counted
+rc::Answer yours(const rc::Scene& s, const rc::Query& q, rc::Counters& n) { return rc::standardAlgorithm(s, q, n); }
+
+// Do two answers agree, up to the oracle's rounding of t?
+bool agree(const rc::Answer& got, const rc::Answer& want) {
+    return got.object == want.object &&
+           (want.object < 0 ? got.t == rc::kNoHit : std::abs(got.t - want.t) <= 1e-9 * std::max(1.0, want.t));
+}
+
+}  // namespace
+
+TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutorial01]") {
     tutorial::Random rnd(1986);
-    int hits = 0, cases = 0;
+    int hits = 0, cases = 0, skipped = 0;
     for (int scene = 0; scene < 40; ++scene) {
         const rc::Scene s = randomScene(rnd, 5 + rnd.index(60), scene % 4 == 0);
-        const rc::LinearSearch search(s);
         for (int i = 0; i < 500; ++i) {
             const rc::Query q = randomQuery(rnd, s);
             rc::Counters n;
-            const rc::Answer want = search.nearest(q, n);
-            const rc::Answer got = yours(s, q);
+            bool ambiguous = false;
+            const rc::Answer want = oracle(s, q, &ambiguous);
+            const rc::Answer got = yours(s, q, n);
+            if (ambiguous) {
+                ++skipped;
+                continue;
+            }
             INFO(std::setprecision(17) << "scene " << scene << " ray " << i << ": origin (" << q.ray.o.x << ", " << q.ray.o.y << ", "
                           << q.ray.o.z << ") direction (" << q.ray.d.x << ", " << q.ray.d.y << ", " << q.ray.d.z
                           << ") from object " << q.origin.object << (q.origin.inside ? " (inside it)" : " (outside it)")
-                          << ", tmax " << q.tmax << ": the complete search finds object " << want.object << " at t = "
-                          << want.t << ", yours object " << got.object << " at t = " << got.t);
+                          << ", tmax " << q.tmax << ": the oracle finds object " << want.object << " at t = "
+                          << want.t << ", yours object " << got.object << " at t = " << got.t << " after "
+                          << n.intersectionTests << " counted test(s)");
             REQUIRE(got.object == want.object);
-            REQUIRE(got.t == want.t);  // the same routine on the same sphere: bit for bit
+            REQUIRE(agree(got, want));
+            // One counted test per object, the surface the ray leaves excepted
+            REQUIRE(n.intersectionTests == std::uint64_t(s.size() - (q.origin.object >= 0 && !q.origin.inside)));
             hits += want.object >= 0;
             ++cases;
         }
     }
-    // The cases are worth something only if many rays hit
+    // The cases are worth something only if many rays hit, and few are left out (rays
+    // leaving a sphere that has a twin start on the twin's surface: about 5% of the cases)
     CHECK(hits > cases / 4);
+    CHECK(skipped < cases / 10);
 }
 
-TEST_CASE("nearestHit finds what the eye sees in cube:3", "[tutorial01]") {
+TEST_CASE("standardAlgorithm finds what the eye sees in cube:3", "[tutorial01]") {
     const rc::Scene s = rc::makeBuiltin("cube:3");
-    const rc::LinearSearch search(s);
     const int w = 48, h = 48;
     const rc::RayGenerator camera(s.camera, w, h);
     // The picture: what your search sees through every pixel, each sphere in its colour,
@@ -92,13 +131,13 @@ TEST_CASE("nearestHit finds what the eye sees in cube:3", "[tutorial01]") {
             rc::Query q;
             q.ray = camera.primary(x, y);
             rc::Counters n;
-            const rc::Answer got = yours(s, q), want = search.nearest(q, n);
+            const rc::Answer got = yours(s, q, n), want = oracle(s, q);
             tutorial::Rgb c = tutorial::labelColour(got.object);
             if (got.object >= 0 && got.t < rc::kNoHit) {
                 const rc::Sphere& b = s.objects[got.object].bound;
                 c = tutorial::shade(c, 0.3 + 0.7 * std::abs(glm::dot(glm::normalize(q.ray.at(got.t) - b.c), q.ray.d)));
             }
-            if (!(got == want)) c = {255, 0, 255}, ++wrong;
+            if (!agree(got, want)) c = {255, 0, 255}, ++wrong;
             pic.set(x, y, c);
         }
     const std::string path = pic.save("cube3", 6);
@@ -109,11 +148,16 @@ TEST_CASE("nearestHit finds what the eye sees in cube:3", "[tutorial01]") {
             rc::Query q;
             q.ray = camera.primary(x, y);
             rc::Counters n;
-            const rc::Answer want = search.nearest(q, n);
-            const rc::Answer got = yours(s, q);
-            INFO(std::setprecision(17) << "pixel (" << x << ", " << y << "): the complete search finds object "
+            const rc::Answer want = oracle(s, q);
+            const rc::Answer got = yours(s, q, n);
+            INFO(std::setprecision(17) << "pixel (" << x << ", " << y << "): the oracle finds object "
                                        << want.object << " at t = " << want.t << ", yours object " << got.object
                                        << " at t = " << got.t);
-            REQUIRE(got == want);
+            REQUIRE(agree(got, want));
         }
+    // What the renderer's pictures make of your loop: the reference picture, pixel for pixel
+    const int off = tutorial::differingPixels(path, TUTORIAL_DIR "/tutorial_01_expected.png");
+    INFO("your picture " << path << " and the reference " TUTORIAL_DIR "/tutorial_01_expected.png differ in " << off
+                         << " pixel(s) (-1: not comparable)");
+    REQUIRE(off == 0);
 }

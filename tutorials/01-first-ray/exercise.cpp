@@ -1,14 +1,16 @@
-// Tutorial 01, your exercise: the complete search. This file is yours to edit. Check it with
-//   cmake --build build --target tutorial-01      (or: ctest --preset student -R 01)
-#include "exercise.h"
+// The standard ray-tracing algorithm: tutorial 01's hole. A student build compiles
+// tutorials/01-first-ray/exercise.cpp in place of this file.
+#include "search/standard_algorithm.h"
 
-namespace tutorial {
+#include "geometry/student_code.h"
 
-// [stub]
-Answer nearestHit([[maybe_unused]] const rc::Scene& scene, [[maybe_unused]] const Query& q) {
+namespace rc {
+
+Answer standardAlgorithm(const Scene& scene, const Query& q, Counters& n) {
     // TODO: test every object of the scene and keep the nearest hit.
+    notYet(1);
+    (void)scene, (void)q, (void)n;
     return Answer{};  // "hits nothing": right for rays into the background only
 }
-// [stub]
 
-}  // namespace tutorial
+}  // namespace rc

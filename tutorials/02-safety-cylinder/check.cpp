@@ -1,6 +1,8 @@
-// Tutorial 02's check: tutorial::segmentDistance against rc::segmentDistance,
-// tutorial::insideCapsule against rc::SafetyCylinder::contains, and tutorial::safetyRadius
-// against the gap to the nearest other sphere, on random cases and on cube:4's eye rays.
+// Tutorial 02's check, against independent oracles (never the library's rc::segmentDistance
+// or rc::SafetyCylinder): tutorial::segmentDistance against a golden-section search along the
+// segment in long double, tutorial::insideCapsule against that distance sampled at points
+// along the new segment, and tutorial::safetyRadius against the gap to the nearest other
+// sphere by that distance, on random cases and on cube:4's eye rays.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
@@ -13,7 +15,6 @@
 
 #include "exercise.h"
 #include "geometry/intersection.h"
-#include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
 #include "search/linear_search.h"
 #include "tutorial_picture.h"
@@ -21,9 +22,47 @@
 
 namespace {
 double closeEnough(double scale) { return 1e-9 * std::max(1.0, scale); }
+
+// The oracle's distance from p to the segment a-b: the least of |p - (a + u (b - a))| over
+// u in [0, 1], a convex function of u, by golden-section search in long double
+double segmentGap(const rc::Vec3& p, const rc::Vec3& a, const rc::Vec3& b) {
+    auto f = [&](long double u) {
+        long double d2 = 0.0L;
+        for (int i = 0; i < 3; ++i) {
+            const long double x = (long double)p[i] - ((long double)a[i] + u * ((long double)b[i] - (long double)a[i]));
+            d2 += x * x;
+        }
+        return std::sqrt(d2);
+    };
+    const long double phi = (std::sqrt(5.0L) - 1.0L) / 2.0L;
+    long double lo = 0.0L, hi = 1.0L, x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
+    long double f1 = f(x1), f2 = f(x2);
+    for (int i = 0; i < 90; ++i) {
+        if (f1 <= f2) {
+            hi = x2, x2 = x1, f2 = f1;
+            x1 = hi - phi * (hi - lo), f1 = f(x1);
+        } else {
+            lo = x1, x1 = x2, f1 = f2;
+            x2 = lo + phi * (hi - lo), f2 = f(x2);
+        }
+    }
+    return double(std::min({f(0.0L), f(1.0L), f1, f2}));
+}
+
+// A capsule: every point within `radius` of the segment a-b
+struct Capsule {
+    rc::Vec3 a, b;
+    double radius;
+    // The oracle: is every one of 17 points spread along p-q within the radius?
+    bool contains(const rc::Vec3& p, const rc::Vec3& q) const {
+        for (int k = 0; k <= 16; ++k)
+            if (segmentGap(p + (q - p) * (k / 16.0), a, b) > radius) return false;
+        return true;
+    }
+};
 }  // namespace
 
-TEST_CASE("segmentDistance agrees with the library's on random points and segments", "[tutorial02]") {
+TEST_CASE("segmentDistance agrees with the oracle on random points and segments", "[tutorial02]") {
     tutorial::Random rnd(1985);
     for (int i = 0; i < 20000; ++i) {
         const double scale = rnd.logUniform(-3.0, 4.0);
@@ -31,17 +70,17 @@ TEST_CASE("segmentDistance agrees with the library's on random points and segmen
         // Sometimes a degenerate segment, sometimes a very short one
         const rc::Vec3 b = i % 10 == 0 ? a : a + scale * rnd.logUniform(-4.0, 0.5) * rnd.direction();
         const rc::Vec3 p = scale * rnd.inBox(2.0);
-        const double want = rc::segmentDistance(p, a, b);
+        const double want = segmentGap(p, a, b);
         INFO(std::setprecision(17) << "case " << i << ": scale " << scale << ", expected " << want);
         REQUIRE(std::abs(tutorial::segmentDistance(p, a, b) - want) <= closeEnough(scale));
     }
 }
 
-TEST_CASE("insideCapsule holds what rc::SafetyCylinder holds", "[tutorial02]") {
+TEST_CASE("insideCapsule holds what the sampled capsule holds", "[tutorial02]") {
     tutorial::Random rnd(85);
     int inside = 0, tested = 0, oneEndOnly = 0;
     for (int i = 0; i < 20000; ++i) {
-        rc::SafetyCylinder cyl{rnd.inBox(5.0), rnd.inBox(5.0), rnd.uniform(0.1, 3.0)};
+        Capsule cyl{rnd.inBox(5.0), rnd.inBox(5.0), rnd.uniform(0.1, 3.0)};
         if (i % 10 == 0) cyl.b = cyl.a;  // a capsule around a point is a sphere
         // Points around the segment, about half of them inside the capsule
         auto near = [&] {
@@ -50,8 +89,8 @@ TEST_CASE("insideCapsule holds what rc::SafetyCylinder holds", "[tutorial02]") {
         };
         const rc::Vec3 p = near(), q = near();
         // Skip points within rounding of the capsule's surface
-        const double dp = rc::segmentDistance(p, cyl.a, cyl.b) - cyl.radius;
-        const double dq = rc::segmentDistance(q, cyl.a, cyl.b) - cyl.radius;
+        const double dp = segmentGap(p, cyl.a, cyl.b) - cyl.radius;
+        const double dq = segmentGap(q, cyl.a, cyl.b) - cyl.radius;
         if (std::abs(dp) < 1e-6 || std::abs(dq) < 1e-6) continue;
         const bool want = cyl.contains(p, q);
         INFO(std::setprecision(17) << "case " << i << ": capsule radius " << cyl.radius << " around a segment of length "
@@ -75,7 +114,7 @@ namespace {
 double gap(const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a, const rc::Vec3& b) {
     double r = rc::kNoHit;
     for (int j = 0; j < int(spheres.size()); ++j)
-        if (j != hit) r = std::min(r, rc::segmentDistance(spheres[j].c, a, b) - spheres[j].r);
+        if (j != hit) r = std::min(r, segmentGap(spheres[j].c, a, b) - spheres[j].r);
     return r;
 }
 }  // namespace
@@ -107,7 +146,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
     const rc::RayGenerator camera(s.camera, n, n);
     // The picture: every pixel whose eye ray hits a sphere, bright where the cylinder of
     // the pixel before it (your radius, your containment test) answers it, dark where
-    // the cache misses; magenta where your answer differs from the library's cylinder
+    // the cache misses; magenta where your answer differs from the oracle's capsule
     std::string picture;
     {
         tutorial::Picture pic(n, n);
@@ -126,16 +165,16 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
                 const bool mine = tutorial::insideCapsule(next.ray.o, h2, q.ray.o, h,
                                                           tutorial::safetyRadius(spheres, hit.object, q.ray.o, h));
                 if (mine) c = tutorial::labelColour(now.object);
-                if (mine != rc::SafetyCylinder{q.ray.o, h, want}.contains(next.ray.o, h2)) c = {255, 0, 255}, ++wrong;
+                if (mine != Capsule{q.ray.o, h, want}.contains(next.ray.o, h2)) c = {255, 0, 255}, ++wrong;
             }
             pic.set(p % n, p / n, c);
         }
         picture = pic.save("cube4", 10);
         tutorial::announcePicture("cube:4, bright: answered by the previous pixel's cylinder; magenta: " +
-                                      std::to_string(wrong) + " pixel(s) answered differently from the library",
+                                      std::to_string(wrong) + " pixel(s) answered differently from the oracle",
                                   picture);
     }
-    INFO(std::setprecision(17) << "your cylinders on cube:4 (magenta: answered differently from the library): " << picture);
+    INFO(std::setprecision(17) << "your cylinders on cube:4 (magenta: answered differently from the oracle): " << picture);
     int hits = 0, tested = 0;
     for (int p = 0; p + 1 < n * n; ++p) {
         rc::Query q;
@@ -154,8 +193,8 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
         const double t = rc::intersectSphere(next.ray, s.objects[hit.object].bound, rc::Start::Elsewhere);
         if (!(t < rc::kNoHit)) continue;
         const rc::Vec3 h2 = next.ray.at(t);
-        const rc::SafetyCylinder cyl{q.ray.o, h, want};
-        const double d2 = rc::segmentDistance(h2, q.ray.o, h) - want;
+        const Capsule cyl{q.ray.o, h, want};
+        const double d2 = segmentGap(h2, q.ray.o, h) - want;
         if (std::abs(d2) < 1e-9) continue;
         INFO(std::setprecision(17) << "the next pixel's segment to the same sphere");
         REQUIRE(tutorial::insideCapsule(next.ray.o, h2, q.ray.o, h, mine) == cyl.contains(next.ray.o, h2));

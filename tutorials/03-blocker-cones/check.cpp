@@ -1,5 +1,9 @@
-// Tutorial 03's check: tutorial::hullDistance against rc::hullDistance, and the blocker
-// lists built with it against the library's rc::BlockerLists.
+// Tutorial 03's check: rc::Hull (your tutorials/03-blocker-cones/exercise.cpp in a student
+// build) against an independent oracle. The convex hull of two spheres is the union of the
+// spheres between them, centre and radius moving linearly from a to b; outside it, the
+// distance is the least over that family, found by golden-section search in long double
+// (the function is convex). The blocker lists of cube:4 are checked against lists the
+// oracle builds sphere by sphere.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
@@ -9,7 +13,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "exercise.h"
+#include <glm/geometric.hpp>
+
 #include "geometry/cone.h"
 #include "scene/builtin_scenes.h"
 #include "search/blocker_lists.h"
@@ -18,6 +23,35 @@
 #include "tutorial_random.h"
 
 namespace {
+
+// The oracle: min over u in [0, 1] of |p - c(u)| - r(u), the distance from p to the hull
+// when p is outside it, negative inside it
+long double hullGap(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
+    auto f = [&](long double u) {
+        long double d2 = 0.0L;
+        for (int i = 0; i < 3; ++i) {
+            const long double c = (long double)a.c[i] + u * ((long double)b.c[i] - (long double)a.c[i]);
+            d2 += ((long double)p[i] - c) * ((long double)p[i] - c);
+        }
+        return std::sqrt(d2) - ((long double)a.r + u * ((long double)b.r - (long double)a.r));
+    };
+    const long double phi = (std::sqrt(5.0L) - 1.0L) / 2.0L;
+    long double lo = 0.0L, hi = 1.0L, x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
+    long double f1 = f(x1), f2 = f(x2);
+    for (int i = 0; i < 90; ++i) {
+        if (f1 <= f2) {
+            hi = x2, x2 = x1, f2 = f1;
+            x1 = hi - phi * (hi - lo), f1 = f(x1);
+        } else {
+            lo = x1, x1 = x2, f1 = f2;
+            x2 = lo + phi * (hi - lo), f2 = f(x2);
+        }
+    }
+    return std::min({f(0.0L), f(1.0L), f1, f2});
+}
+
+// Your hull's distance
+double yours(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) { return rc::Hull(a, b).distance(p); }
 
 // A random pair of spheres: ordinary, one a point (the eye, a light), equal radii (a
 // cylinder), or one inside the other
@@ -48,7 +82,7 @@ std::string drawHull() {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const rc::Vec3 p = world(x + 0.5, y + 0.5);
-            const bool mine = tutorial::hullDistance(p, a, b) <= 0.0, want = rc::hullDistance(p, a, b) <= 0.0;
+            const bool mine = yours(p, a, b) <= 0.0, want = hullGap(p, a, b) <= 0.0;
             if (mine) pic.set(x, y, want ? tutorial::Rgb{120, 160, 230} : tutorial::Rgb{250, 235, 150});
             else if (want) pic.set(x, y, {255, 0, 255}), ++leftOut;
         }
@@ -60,8 +94,8 @@ std::string drawHull() {
     tutorial::Random rnd(2);
     for (int i = 0; i < 40; ++i) {
         const rc::Sphere s{{rnd.uniform(-5.5, 5.5), rnd.uniform(-3.5, 3.5), 0.0}, rnd.uniform(0.15, 0.45)};
-        if (rc::hullDistance(s.c, a, a) < s.r || rc::hullDistance(s.c, b, b) < s.r) continue;  // overlaps a or b
-        const bool mine = tutorial::hullDistance(s.c, a, b) <= s.r, want = rc::meetsHull(s, a, b, 0.0);
+        if (glm::length(s.c - a.c) - a.r < s.r || glm::length(s.c - b.c) - b.r < s.r) continue;  // overlaps a or b
+        const bool mine = yours(s.c, a, b) <= s.r, want = hullGap(s.c, a, b) <= s.r;
         pixel(s.c, px, py);
         const tutorial::Rgb c = mine && want ? tutorial::Rgb{240, 140, 20}
                                 : mine       ? tutorial::Rgb{230, 210, 40}
@@ -81,7 +115,7 @@ std::string drawHull() {
 
 // Extra spheres in a list are allowed (the list stays correct, each costs one more
 // intersection test per cache hit), a missing one never is. Lists longer than this
-// many times the library's no longer count as an answer.
+// many times the oracle's no longer count as an answer.
 constexpr double kMaxExtraFactor = 1.5;
 
 TEST_CASE("hullDistance never puts a point of the hull outside it", "[tutorial03]") {
@@ -95,8 +129,8 @@ TEST_CASE("hullDistance never puts a point of the hull outside it", "[tutorial03
         const rc::Vec3 p = i % 2 ? rnd.inBox(6.0)
                                  : a.c + rnd.uniform(-0.2, 1.2) * (b.c - a.c) +
                                        rnd.uniform(0.0, 1.5) * std::max(a.r, b.r) * rnd.direction();
-        const double want = rc::hullDistance(p, a, b);
-        const double got = tutorial::hullDistance(p, a, b);
+        const double want = double(hullGap(p, a, b));
+        const double got = yours(p, a, b);
         INFO(std::setprecision(17) << "case " << i << ": a = (" << a.c.x << ", " << a.c.y << ", " << a.c.z << ") r " << a.r << ", b = ("
                      << b.c.x << ", " << b.c.y << ", " << b.c.z << ") r " << b.r << "; p = (" << p.x << ", " << p.y
                      << ", " << p.z << "); expected " << want << ", got " << got);
@@ -130,10 +164,10 @@ TEST_CASE("meetsHull decisions built on hullDistance keep every sphere that meet
                                  : a.c + rnd.uniform(-0.2, 1.2) * (b.c - a.c) +
                                        rnd.uniform(0.0, 3.0) * std::max(a.r, b.r) * rnd.direction();
         const rc::Sphere s{c, rnd.uniform(0.0, 1.5)};
-        const double margin = rc::hullDistance(s.c, a, b) - s.r;
+        const double margin = double(hullGap(s.c, a, b)) - s.r;
         if (std::abs(margin) < 1e-7) continue;  // within rounding of touching
-        const bool want = rc::meetsHull(s, a, b, 0.0);
-        const bool mine = tutorial::hullDistance(s.c, a, b) <= s.r;
+        const bool want = margin <= 0.0;
+        const bool mine = yours(s.c, a, b) <= s.r;
         INFO(std::setprecision(17) << "case " << i << ": a sphere that meets the hull, left out");
         if (want) REQUIRE(mine);
         meets += want;
@@ -143,11 +177,10 @@ TEST_CASE("meetsHull decisions built on hullDistance keep every sphere that meet
     REQUIRE(extra <= (kMaxExtraFactor - 1.0) * meets);
 }
 
-TEST_CASE("blocker lists of cube:4 built with hullDistance hold the library's", "[tutorial03]") {
+TEST_CASE("blocker lists of cube:4 built with your hull hold the oracle's", "[tutorial03]") {
     const rc::Scene s = rc::makeBuiltin("cube:4");
     const rc::LinearSearch linear(s);
-    rc::BlockerLists lists(s, linear);
-    rc::Counters n;
+    const rc::BlockerLists lists(s, linear);  // only for its sites (the eye, the lights, the spheres)
     // Every pair of origin (the eye, a light or a sphere) and target (a sphere or a light)
     std::vector<int> sites;
     for (int id = 0; id < s.size(); ++id) sites.push_back(id);
@@ -158,13 +191,15 @@ TEST_CASE("blocker lists of cube:4 built with hullDistance hold the library's", 
         for (int target : sites) {
             if (origin == target) continue;
             const rc::Sphere a = lists.siteSphere(origin), b = lists.siteSphere(target);
-            std::vector<int> mine;
-            for (int id = 0; id < s.size(); ++id)
-                if (id != target && tutorial::hullDistance(s.objects[id].bound.c, a, b) <= s.objects[id].bound.r)
-                    mine.push_back(id);
-            // The library keeps its lists nearest first; compare them as sets
-            std::vector<int> want = lists.get(origin, target, n).ids;
-            std::sort(want.begin(), want.end());
+            const rc::Hull hull(a, b);
+            std::vector<int> mine, want;
+            for (int id = 0; id < s.size(); ++id) {
+                if (id == target) continue;
+                const rc::Sphere& bound = s.objects[id].bound;
+                if (hull.distance(bound.c) <= bound.r) mine.push_back(id);
+                // The oracle's list: every sphere that meets the hull by more than rounding
+                if (hullGap(bound.c, a, b) <= bound.r - 1e-9) want.push_back(id);
+            }
             std::vector<int> missing;
             std::set_difference(want.begin(), want.end(), mine.begin(), mine.end(), std::back_inserter(missing));
             INFO(std::setprecision(17) << "origin site " << origin << ", target site " << target << ": your list leaves out "
@@ -175,9 +210,9 @@ TEST_CASE("blocker lists of cube:4 built with hullDistance hold the library's", 
             libraryTotal += long(want.size());
             nonEmpty += !want.empty();
         }
-    WARN("cube:4's blocker lists: the library's hold " << libraryTotal << " spheres, yours " << libraryTotal + extra
+    WARN("cube:4's blocker lists: the oracle's hold " << libraryTotal << " spheres, yours " << libraryTotal + extra
                                                         << " (" << extra << " extra)");
-    INFO(std::setprecision(17) << "your lists hold " << extra << " extra spheres on top of the library's " << libraryTotal
+    INFO(std::setprecision(17) << "your lists hold " << extra << " extra spheres on top of the oracle's " << libraryTotal
                             << ": more than " << kMaxExtraFactor << " times as long, the cache loses its point");
     REQUIRE(double(libraryTotal + extra) <= kMaxExtraFactor * double(libraryTotal));
     CHECK(nonEmpty > 100);

@@ -1,16 +1,25 @@
-// Tutorial 03, your exercise: the distance to the hull of two spheres. This file is yours to edit. Check it with
-//   cmake --build build --target tutorial-03      (or: ctest --preset student -R 03)
+/// \file
+/// \brief The convex hull of two spheres (the solid of a blocker cone): rc::Hull, tutorial 03's hole. A student build
+/// compiles tutorials/03-blocker-cones/exercise.cpp in place of this file.
+#include <algorithm>
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/cone.h"
+#include "geometry/student_code.h"
 
-namespace tutorial {
+namespace rc {
 
-// [stub]
-double hullDistance(const rc::Vec3& p, const rc::Sphere& a, [[maybe_unused]] const rc::Sphere& b) {
-    // TODO: the hull is both spheres and the cone between them; this sees sphere a only.
-    return glm::length(p - a.c) - a.r;
+Hull::Hull(const Sphere& a, const Sphere& b) : a_(a), b_(b) {
+    // TODO 1: what distance() needs, computed once per hull (the members in geometry/cone.h).
+    nested_ = false;
 }
-// [stub]
 
-}  // namespace tutorial
+double Hull::distance(const Vec3& p) const {
+    // TODO 2: the hull is both spheres and the cone between them; this sees sphere a only.
+    notYet(3);
+    return glm::length(p - a_.c) - a_.r;
+}
+
+}  // namespace rc

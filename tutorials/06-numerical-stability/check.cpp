@@ -1,5 +1,7 @@
-// Tutorial 06's check: tutorial::stableRoots against rc::sphereRootsStable, on ordinary
-// cases (where the textbook formula is fine too) and on stiff ones (where it is not).
+// Tutorial 06's check: rc::sphereRootsStable (your tutorials/06-numerical-stability/exercise.cpp
+// in a student build) against an independent oracle, roots found by bisection in long double
+// and polished in quad precision (oracle_roots.h), on ordinary cases (where the textbook
+// formula is fine too) and on stiff ones (where it is not).
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
@@ -11,10 +13,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
 #include "geometry/intersection.h"
 #include "scene/nff_reader.h"
 #include "search/query.h"
+#include "oracle_roots.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -31,10 +33,17 @@ rc::Ray rayTowards(tutorial::Random& rnd, const rc::Sphere& s, double distance, 
     return {o, glm::normalize(target - o)};
 }
 
-// The student's roots must match the library's to 1e-12 of the problem's size
+// The oracle's roots, rounded to doubles
+rc::SphereRoots oracle(const rc::Ray& ray, const rc::Sphere& s) {
+    const tutorial::OracleRoots r = tutorial::oracleRoots(ray, s);
+    if (!r.hit) return {};
+    return {true, double(r.t0), double(r.t1)};
+}
+
+// Your roots must match the oracle's to 1e-12 of the problem's size
 void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
-    const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
-    const tutorial::Roots got = tutorial::stableRoots(ray, s);
+    const rc::SphereRoots want = oracle(ray, s);
+    const rc::SphereRoots got = rc::sphereRootsStable(ray, s);
     INFO(std::setprecision(17) << "sphere radius " << s.r << " at distance " << glm::length(s.c - ray.o) << ", aimed " << aim
                           << " radii off centre; library: hit " << want.hit << " t0 " << want.t0 << " t1 "
                           << want.t1 << "; yours: hit " << got.hit << " t0 " << got.t0 << " t1 " << got.t1);
@@ -50,7 +59,7 @@ void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
 
 }  // namespace
 
-TEST_CASE("stableRoots agrees with the library on ordinary spheres", "[tutorial06]") {
+TEST_CASE("stableRoots agrees with the oracle on ordinary spheres", "[tutorial06]") {
     tutorial::Random rnd(7);
     for (int i = 0; i < 20000; ++i) {
         const rc::Sphere s{rnd.inBox(10.0), rnd.uniform(0.5, 3.0)};
@@ -59,7 +68,7 @@ TEST_CASE("stableRoots agrees with the library on ordinary spheres", "[tutorial0
     }
 }
 
-TEST_CASE("stableRoots agrees with the library on small spheres far away", "[tutorial06]") {
+TEST_CASE("stableRoots agrees with the oracle on small spheres far away", "[tutorial06]") {
     // The textbook formula forms b*b - c from two numbers near distance^2 and loses
     // every digit of r^2 once r^2 is below distance^2 times the double's epsilon
     tutorial::Random rnd(2020);
@@ -70,7 +79,7 @@ TEST_CASE("stableRoots agrees with the library on small spheres far away", "[tut
     }
 }
 
-TEST_CASE("stableRoots agrees with the library from inside and on the surface", "[tutorial06]") {
+TEST_CASE("stableRoots agrees with the oracle from inside and on the surface", "[tutorial06]") {
     tutorial::Random rnd(1986);
     for (int i = 0; i < 20000; ++i) {
         const rc::Sphere s{rnd.inBox(10.0), rnd.logUniform(-2.0, 3.0)};
@@ -102,10 +111,10 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
         const rc::Sphere s{c, r};
         // Aim at a point well inside the sphere: a clear hit, the near root tiny
         const rc::Ray ray{o, glm::normalize(c + 0.5 * r * rnd.direction() - o)};
-        const rc::SphereRoots want = rc::sphereRootsStable(ray, s);
-        const tutorial::Roots got = tutorial::stableRoots(ray, s);
+        const rc::SphereRoots want = oracle(ray, s);
+        const rc::SphereRoots got = rc::sphereRootsStable(ray, s);
         INFO(std::setprecision(17) << "sphere radius " << r << ", origin " << std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - r
-                              << " outside it; library t0 " << want.t0 << ", yours " << got.t0 << " (relative error "
+                              << " outside it; oracle t0 " << want.t0 << ", yours " << got.t0 << " (relative error "
                               << std::abs(got.t0 - want.t0) / want.t0 << ")");
         REQUIRE(want.hit);
         REQUIRE(got.hit);
@@ -116,7 +125,7 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
     }
 }
 
-TEST_CASE("far.nff drawn with your roots matches the stable roots", "[tutorial06]") {
+TEST_CASE("far.nff drawn with your roots matches the oracle's", "[tutorial06]") {
     // Spheres of radius about 1 a billion units from the eye: each pixel's eye ray is
     // tested against every sphere with your roots, the nearest root in front wins
     const rc::Scene s = rc::readNffFile(TUTORIAL_DIR "/far.nff");
@@ -136,8 +145,8 @@ TEST_CASE("far.nff drawn with your roots matches the stable roots", "[tutorial06
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const rc::Ray ray = camera.primary(x, y);
-            const rc::Answer mine = firstHit(ray, tutorial::stableRoots);
-            const rc::Answer want = firstHit(ray, rc::sphereRootsStable);
+            const rc::Answer mine = firstHit(ray, rc::sphereRootsStable);
+            const rc::Answer want = firstHit(ray, oracle);
             tutorial::Rgb c = tutorial::labelColour(mine.object);
             if (mine.object >= 0) {
                 // Shade by the normal at your hit point, facing the light

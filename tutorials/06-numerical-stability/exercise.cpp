@@ -1,25 +1,22 @@
-// Tutorial 06, your exercise: make the ray-sphere roots stable. This file is yours to edit. Check it with
-//   cmake --build build --target tutorial-06      (or: ctest --preset student -R 06)
+/// \file
+/// \brief The stable ray-sphere roots, rc::sphereRootsStable(): tutorial 06's hole. A student build
+/// compiles tutorials/06-numerical-stability/exercise.cpp in place of this file.
 #include <cmath>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/intersection.h"
+#include "geometry/student_code.h"
 
-namespace tutorial {
+namespace rc {
 
-// [stub]
-Roots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
+SphereRoots sphereRootsStable(const Ray& ray, const Sphere& s) {
     // TODO: this is the textbook formula. It is right on paper and wrong in doubles when
-    // the sphere is small and far away: b*b and c are huge and nearly equal. Make it stable.
-    const rc::Vec3 f = ray.o - s.c;
-    const double b = glm::dot(f, ray.d);
-    const double c = glm::dot(f, f) - s.r * s.r;
-    const double disc = b * b - c;
-    if (disc < 0.0) return {};
-    const double root = std::sqrt(disc);
-    return {true, -b - root, -b + root};
+    // the sphere is small and far away: b*b and c are huge and nearly equal. Make it
+    // stable, and keep t0 <= t1.
+    notYet(6);
+    return sphereRootsTextbook(ray, s);
 }
-// [stub]
 
-}  // namespace tutorial
+}  // namespace rc

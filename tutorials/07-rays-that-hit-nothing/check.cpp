@@ -39,15 +39,48 @@ double angleBetween(const rc::Vec3& a, const rc::Vec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
-// The check's own empty cone: the same definition, written independently
+// The check's oracle for the empty cone. For each sphere, the ray from the apex is turned
+// from the axis towards the sphere's centre, in the plane of the two, until it meets the
+// sphere: bisection in long double on the angle, a ray meeting the sphere when its distance
+// from the centre (a cross product, no cancellation) is at most the radius. The cone opens
+// to the least such angle. No formula for the angle of the tangent.
 double coneAngle(const rc::Vec3& apex, const rc::Vec3& axis, const std::vector<rc::Sphere>& spheres) {
-    double angle = rc::kNoHit;
+    using L = long double;
+    struct V {
+        L x, y, z;
+    };
+    auto dot = [](const V& a, const V& b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+    auto cross = [](const V& a, const V& b) {
+        return V{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    };
+    const L al = std::sqrt(L(axis.x) * axis.x + L(axis.y) * axis.y + L(axis.z) * axis.z);
+    const V a{axis.x / al, axis.y / al, axis.z / al};
+    L angle = INFINITY;
     for (const rc::Sphere& s : spheres) {
-        const double dist = glm::length(s.c - apex);
-        if (dist <= s.r) return -1.0;
-        angle = std::min(angle, angleBetween(axis, s.c - apex) - std::asin(s.r / dist));
+        const V v{L(s.c.x) - apex.x, L(s.c.y) - apex.y, L(s.c.z) - apex.z};
+        const L dist = std::sqrt(dot(v, v)), r = s.r;
+        if (dist <= r) return -1.0;  // the apex is inside: every ray meets it
+        // w: the unit vector in the plane of the axis and the centre, across the axis
+        V w{v.x - dot(v, a) * a.x, v.y - dot(v, a) * a.y, v.z - dot(v, a) * a.z};
+        L wl = std::sqrt(dot(w, w));
+        if (wl < 1e-30L) {  // the centre on the axis's line: any direction across it
+            w = std::abs(a.x) < 0.9L ? cross(a, V{1, 0, 0}) : cross(a, V{0, 1, 0});
+            wl = std::sqrt(dot(w, w));
+        }
+        w = {w.x / wl, w.y / wl, w.z / wl};
+        auto meets = [&](L theta) {
+            const V u{std::cos(theta) * a.x + std::sin(theta) * w.x, std::cos(theta) * a.y + std::sin(theta) * w.y,
+                      std::cos(theta) * a.z + std::sin(theta) * w.z};
+            const V c = cross(v, u);
+            return dot(v, u) > 0 && dot(c, c) <= r * r;
+        };
+        if (meets(0)) return -1.0;  // the ray along the axis meets it
+        const L alpha = std::atan2(std::sqrt(dot(cross(v, a), cross(v, a))), dot(v, a));
+        L lo = 0, hi = alpha;  // misses at lo, meets at hi (straight at the centre)
+        for (int k = 0; k < 100; ++k) (meets((lo + hi) / 2) ? hi : lo) = (lo + hi) / 2;
+        angle = std::min(angle, lo);
     }
-    return angle;
+    return double(angle);
 }
 
 // The complete search: the nearest sphere the ray hits, ties to the lower index
@@ -132,30 +165,6 @@ private:
     rc::Sphere bound_{rc::Vec3{0.0}, 0.0};
     rc::Vec3 end_{0.0};
     double radius_ = -1.0;
-};
-
-// The design notes' one exact answer: the empty cone of the last ray that hit nothing
-class OneConeCache final : public tutorial::NothingCache {
-public:
-    explicit OneConeCache(const CountedSpheres& spheres) : spheres_(spheres) {}
-    tutorial::Known lookup(const rc::Vec3& d) override {
-        if (angle_ > 0.0 && angleBetween(axis_, d) < angle_ * (1.0 - 1e-9)) return {true, -1};
-        return {};
-    }
-    void searched(const rc::Vec3& d, int object) override {
-        if (object >= 0) return;
-        axis_ = d;
-        angle_ = rc::kNoHit;
-        for (int j = 0; j < spheres_.size(); ++j) {
-            const tutorial::Spheres::Disc disc = spheres_.disc(d, j);
-            angle_ = std::min(angle_, disc.centreAngle - disc.radius);
-        }
-    }
-
-private:
-    const CountedSpheres& spheres_;
-    rc::Vec3 axis_{0.0};
-    double angle_ = -1.0;
 };
 
 // ---- Driving a cache over a scene's eye rays in scanline order ------------------------
@@ -309,6 +318,34 @@ double maxTestsPerAnswer(const Scene& scene) { return std::max(1.0, kListFractio
 constexpr double kChallengeSearchFraction = 0.2;  // of the one-empty-cone cache's searches on empty rays
 constexpr double kChallengeAfterEmpty = 0.5;      // rays after an empty ray answered by the cache
 
+// The yardstick of the challenge: the design notes' one exact answer, the empty cone of the
+// last ray that hit nothing, counted straight over the eye rays in scanline order (not a
+// cache: it reads the spheres, and its cone is the oracle's). A ray inside the cone is
+// answered; any other is searched, and an empty one, searched, makes the new cone with one
+// look at every sphere (n tests: one more complete search).
+struct OneCone {
+    long searches = 0, emptySearches = 0;
+    double cost = 0.0;  ///< complete searches, counting its n tests per new cone as one
+};
+OneCone oneCone(const Scene& scene) {
+    const rc::RayGenerator camera(scene.camera, scene.width, scene.height);
+    OneCone out;
+    rc::Vec3 axis{0.0};
+    double angle = -1.0;
+    for (int p = 0; p < scene.width * scene.height; ++p) {
+        const rc::Ray ray = camera.primary(p % scene.width, p / scene.width);
+        if (angle > 0.0 && angleBetween(axis, ray.d) < angle * (1.0 - 1e-9)) continue;
+        ++out.searches;
+        out.cost += 1.0;
+        if (nearest(ray, scene.spheres) >= 0) continue;
+        ++out.emptySearches;
+        out.cost += 1.0;
+        axis = ray.d;
+        angle = coneAngle(scene.camera.from, ray.d, scene.spheres);
+    }
+    return out;
+}
+
 void printRow(const char* cache, const Run& r) {
     std::printf("  %-20s %9.1f %9.1f %8.2f %9ld %9ld %12.2f %7ld/%ld\n", cache, r.cost, r.emptyCost, r.searchesPerBeam(),
                 r.searches, r.setupTests + r.lookupTests + r.searchedTests, r.testsPerAnswer(), r.afterEmptyAnswered,
@@ -380,7 +417,7 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
     for (const Scene& scene : scenes()) {
         const double n = double(scene.spheres.size());
         const Run cylinder = drive(scene, [](const CountedSpheres& s) { return std::make_unique<CylinderCache>(s); });
-        const Run cone = drive(scene, [](const CountedSpheres& s) { return std::make_unique<OneConeCache>(s); });
+        const OneCone cone = oneCone(scene);
         const Run yours = drive(scene, [](const CountedSpheres& s) { return tutorial::makeNothingCache(s); });
         std::printf("%s: %zu spheres, %ld eye rays, %ld hit nothing, in %ld beam(s)\n", scene.name.c_str(),
                     scene.spheres.size(), yours.rays, yours.emptyRays, yours.emptyBeams);
@@ -389,7 +426,7 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
         std::printf("  %-20s %9ld %9ld %8.2f %9ld %9d %12s %13s\n", "none", yours.rays, yours.emptyRays,
                     double(yours.emptyRays) / double(std::max(1L, yours.emptyBeams)), yours.rays, 0, "-", "-");
         printRow("cylinder of safety", cylinder);
-        printRow("one empty cone", cone);
+        std::printf("  %-20s %9.1f %9.1f\n", "one empty cone", cone.cost, 2.0 * double(cone.emptySearches));
         printRow("yours", yours);
         const std::string path = draw(scene, yours, scene.name == "cube:4" ? "cube4" : scene.name == "cube:6" ? "cube6" : scene.name);
         tutorial::announcePicture("your cache on " + scene.name + ": blue answered, red searched, magenta wrong", path);
@@ -429,7 +466,7 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
 TEST_CASE("challenge: a fifth of the one-cone cache's complete searches on rays that hit nothing, cheaply",
           "[tutorial07]") {
     for (const Scene& scene : scenes()) {
-        const Run cone = drive(scene, [](const CountedSpheres& s) { return std::make_unique<OneConeCache>(s); });
+        const OneCone cone = oneCone(scene);
         const Run yours = drive(scene, [](const CountedSpheres& s) { return tutorial::makeNothingCache(s); });
         if (yours.firstWrong >= 0) {
             FAIL_CHECK(scene.name << ": a wrong answer at pixel (" << yours.firstWrong % scene.width << ", "

@@ -6,6 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+
 #include "render/output_files.h"
 
 namespace tutorial {
@@ -78,6 +81,21 @@ std::string Picture::save(const std::string& name, int scale) const {
 
 void announcePicture(const std::string& what, const std::string& path) {
     std::printf("Picture (%s): %s\n", what.c_str(), path.c_str());
+}
+
+int differingPixels(const std::string& picture, const std::string& reference) {
+    int w[2], h[2], channels;
+    unsigned char* px[2] = {stbi_load(picture.c_str(), &w[0], &h[0], &channels, 3),
+                            stbi_load(reference.c_str(), &w[1], &h[1], &channels, 3)};
+    int differ = -1;
+    if (px[0] && px[1] && w[0] == w[1] && h[0] == h[1]) {
+        differ = 0;
+        for (int i = 0; i < w[0] * h[0]; ++i)
+            differ += px[0][3 * i] != px[1][3 * i] || px[0][3 * i + 1] != px[1][3 * i + 1] || px[0][3 * i + 2] != px[1][3 * i + 2];
+    }
+    for (unsigned char* p : px)
+        if (p) stbi_image_free(p);
+    return differ;
 }
 
 }  // namespace tutorial

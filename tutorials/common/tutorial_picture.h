@@ -40,6 +40,10 @@ private:
 /// The running program's name (set by the tutorials' main from argv[0]).
 extern std::string programName;
 
+/// How many pixels of the PNG `picture` differ from those of the PNG `reference` (decoded,
+/// 8-bit RGB); -1 when either cannot be read or their sizes differ.
+int differingPixels(const std::string& picture, const std::string& reference);
+
 /// Prints where a picture was written (one line a student can open).
 void announcePicture(const std::string& what, const std::string& path);
 

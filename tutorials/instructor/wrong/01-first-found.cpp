@@ -1,14 +1,15 @@
 // Tutorial 01, a wrong answer: the first object hit in id order, not the nearest.
-#include "exercise.h"
+#include "search/standard_algorithm.h"
 
-namespace tutorial {
+namespace rc {
 
 // [solution]
-Answer nearestHit(const rc::Scene& scene, const Query& q) {
+Answer standardAlgorithm(const Scene& scene, const Query& q, Counters& n) {
     Answer best;  // object -1, t = kNoHit
     for (int id = 0; id < scene.size(); ++id) {
         // Convexity: a ray leaving a surface cannot meet it again
         if (id == q.origin.object && !q.origin.inside) continue;
+        ++n.intersectionTests;
         const double t = scene.intersect(q.ray, id, q.origin);
         if (t < q.tmax && best.object < 0) best = {id, t};
     }
@@ -16,4 +17,4 @@ Answer nearestHit(const rc::Scene& scene, const Query& q) {
 }
 // [solution]
 
-}  // namespace tutorial
+}  // namespace rc

@@ -4,11 +4,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/cone.h"
 
-namespace tutorial {
+namespace rc {
 
-double hullDistance(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
+static double hullDistanceOf(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
     {
         const rc::Vec3 mid = 0.5 * (a.c + b.c);
         return glm::length(p - mid) - (0.5 * glm::length(b.c - a.c) + std::max(a.r, b.r));
@@ -34,4 +34,8 @@ double hullDistance(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b)
     return x * s + y * c - a.r;                              // nearest to the cone
 }
 
-}  // namespace tutorial
+// The hull keeps its two spheres; distance() is the function above
+Hull::Hull(const Sphere& a, const Sphere& b) : a_(a), b_(b), nested_(false) {}
+double Hull::distance(const Vec3& p) const { return hullDistanceOf(p, a_, b_); }
+
+}  // namespace rc

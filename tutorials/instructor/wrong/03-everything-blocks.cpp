@@ -4,11 +4,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/cone.h"
 
-namespace tutorial {
+namespace rc {
 
-double hullDistance(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
+static double hullDistanceOf(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
     return -1.0 + 0.0 * glm::length(p - a.c - b.c);
     const rc::Vec3 axis = b.c - a.c;
     const double D = glm::length(axis);
@@ -31,4 +31,8 @@ double hullDistance(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b)
     return x * s + y * c - a.r;                              // nearest to the cone
 }
 
-}  // namespace tutorial
+// The hull keeps its two spheres; distance() is the function above
+Hull::Hull(const Sphere& a, const Sphere& b) : a_(a), b_(b), nested_(false) {}
+double Hull::distance(const Vec3& p) const { return hullDistanceOf(p, a_, b_); }
+
+}  // namespace rc

@@ -4,11 +4,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/intersection.h"
 
-namespace tutorial {
+namespace rc {
 
-Roots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
+SphereRoots sphereRootsStable(const Ray& ray, const Sphere& s) {
     const rc::Vec3 f = ray.o - s.c;
     const double b = glm::dot(f, ray.d);
     // r^2 - |l|^2 with l the centre's perpendicular offset: no large squares cancel
@@ -23,4 +23,4 @@ Roots stableRoots(const rc::Ray& ray, const rc::Sphere& s) {
     return {true, t0, t1};
 }
 
-}  // namespace tutorial
+}  // namespace rc

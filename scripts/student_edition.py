@@ -1,0 +1,213 @@
+#!/usr/bin/env python3
+"""The student edition of RayCache, and the checks CI makes of it.
+
+  student_edition.py export OUT [--open 01,03]   write the edition (default: every tutorial open)
+  student_edition.py stub FILE NN                 print FILE with tutorial NN's solution regions stubbed
+  student_edition.py leaks EDITION                fail when a line of a solution region occurs in EDITION
+  student_edition.py inject EDITION               put the instructor's solutions back into EDITION's holes
+
+Solution regions (nbgrader's convention, in C++ comments):
+    // BEGIN SOLUTION NN
+    ...the reference code...
+    // END SOLUTION
+    // BEGIN STUB
+    // ...the stub, each line commented out once...
+    // END STUB
+An open tutorial's region becomes its stub; a closed one keeps its solution (as a course
+releases it after the deadline). The edition leaves out tutorials/instructor/ and replaces
+each file under scripts/student_edition/replace/ (pages that quote solutions).
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+BEGIN = re.compile(r'^\s*// BEGIN SOLUTION (\d\d)\s*$')
+END = re.compile(r'^\s*// END SOLUTION\s*$')
+STUB_BEGIN = re.compile(r'^\s*// BEGIN STUB\s*$')
+STUB_END = re.compile(r'^\s*// END STUB\s*$')
+LEFT_OUT = ('tutorials/instructor/', 'scripts/student_edition/')
+REPLACE = 'scripts/student_edition/replace/'
+ALL = ['01', '02', '03', '04', '05', '06', '07']
+
+
+def regions(text):
+    """(tutorial, solution lines, stub lines, start, end) of each region: lines [start, end)."""
+    lines = text.split('\n')
+    out, i = [], 0
+    while i < len(lines):
+        m = BEGIN.match(lines[i])
+        if not m:
+            i += 1
+            continue
+        start, sol = i, []
+        i += 1
+        while not END.match(lines[i]):
+            sol.append(lines[i])
+            i += 1
+        i += 1
+        if not STUB_BEGIN.match(lines[i]):
+            raise SystemExit(f'solution region of tutorial {m.group(1)} without a stub after it')
+        i += 1
+        stub = []
+        while not STUB_END.match(lines[i]):
+            stub.append(re.sub(r'^(\s*)// ?', r'\1', lines[i], count=1))
+            i += 1
+        i += 1
+        out.append((m.group(1), sol, stub, start, i))
+    return lines, out
+
+
+def stubbed(text, open_tutorials):
+    lines, found = regions(text)
+    result, at = [], 0
+    for nn, sol, stub, start, end in found:
+        result += lines[at:start]
+        result += stub if nn in open_tutorials else sol
+        at = end
+    return '\n'.join(result + lines[at:])
+
+
+def tracked(root):
+    files = subprocess.run(['git', '-C', root, 'ls-files', '-z'], check=True, capture_output=True).stdout
+    return [f for f in files.decode().split('\0') if f]
+
+
+def export(root, out, open_tutorials):
+    if os.path.exists(out):
+        raise SystemExit(f'{out} exists: the edition is written to a new directory')
+    replaced = {f[len(REPLACE):] for f in tracked(root) if f.startswith(REPLACE)}
+    for f in tracked(root):
+        if f.startswith(LEFT_OUT) or not os.path.isfile(os.path.join(root, f)):
+            continue
+        src = os.path.join(root, REPLACE + f) if f in replaced else os.path.join(root, f)
+        dst = os.path.join(out, f)
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        try:
+            text = open(src, encoding='utf-8').read()
+        except UnicodeDecodeError:
+            shutil.copy2(src, dst)
+            continue
+        if BEGIN.search(text) or '// BEGIN SOLUTION' in text:
+            text = stubbed(text, open_tutorials)
+        with open(dst, 'w', encoding='utf-8') as o:
+            o.write(text)
+        shutil.copymode(src, dst)
+    with open(os.path.join(out, 'tutorials/student_edition.cmake'), 'w') as o:
+        o.write('# Written by scripts/student_edition.sh: this is the student edition. Each open\n'
+                '# tutorial\'s exercise.cpp is compiled in place of the function it is a hole in.\n'
+                'set(RAYCACHE_STUDENT ON CACHE BOOL "Student build")\n'
+                'set(RAYCACHE_STUDENT_OPEN "%s" CACHE STRING "The open tutorials")\n'
+                'set(RAYCACHE_DOCS OFF CACHE BOOL "The docs site is the instructor\'s")\n' % ';'.join(open_tutorials))
+
+
+def hole_files(root):
+    """The files in root that hold solution regions: {path: text}."""
+    out = {}
+    for f in tracked(root):
+        if f.startswith(LEFT_OUT) or not f.endswith(('.cpp', '.h')):
+            continue
+        text = open(os.path.join(root, f), encoding='utf-8').read()
+        if '// BEGIN SOLUTION' in text:
+            out[f] = text
+    return out
+
+
+def holes(root):
+    """(tutorial, file under src/) of each hole, as src/CMakeLists.txt lists them
+    (RAYCACHE_HOLES): the file a student build replaces with the tutorial's exercise.cpp."""
+    text = open(os.path.join(root, 'src/CMakeLists.txt'), encoding='utf-8').read()
+    return re.findall(r'"(\d\d)\|([^|"]+)\|[^"]*"', text)
+
+
+def norm(line):
+    return ' '.join(line.split())
+
+
+def leaks(root, edition, open_tutorials):
+    """Every whitespace-normalised line of 25 characters or more of an open tutorial's
+    solution region, looked for in every text file of the edition. A line that the
+    instructor's project also holds outside the regions and outside tutorials/ (library
+    code both editions ship, such as a loop header) is not the edition's leak: it is
+    counted apart."""
+    needles = {}
+    for f, text in hole_files(root).items():
+        for nn, sol, _, _, _ in regions(text)[1]:
+            if nn in open_tutorials:
+                for line in sol:
+                    n = norm(line)
+                    if len(n) >= 25 and not n.startswith('// ['):
+                        needles[n] = f'{f} (tutorial {nn})'
+    shared = set()
+    for f in tracked(root):
+        if f.startswith('tutorials/') or not f.endswith(('.cpp', '.h', '.md', '.js', '.py', '.txt', '.cmake')):
+            continue
+        text = open(os.path.join(root, f), encoding='utf-8').read()
+        lines, found = regions(text) if '// BEGIN SOLUTION' in text else (text.split('\n'), [])
+        inside = set()
+        for _, _, _, start, end in found:
+            inside.update(range(start, end))
+        for k, line in enumerate(lines):
+            if k not in inside and norm(line) in needles:
+                shared.add(norm(line))
+    for n in shared:
+        del needles[n]
+    found = 0
+    for dirpath, _, names in os.walk(edition):
+        rel = os.path.relpath(dirpath, edition)
+        if rel.split(os.sep)[0] in ('build', '.git'):
+            continue
+        for name in names:
+            path = os.path.join(dirpath, name)
+            try:
+                lines = open(path, encoding='utf-8').read().split('\n')
+            except (UnicodeDecodeError, OSError):
+                continue
+            for k, line in enumerate(lines):
+                n = norm(line)
+                if n in needles:
+                    print(f'{path}:{k + 1}: a line of {needles[n]}: {n}')
+                    found += 1
+    print(f'leak check: {len(needles)} lines of solution regions (25 characters or more; {len(shared)} more '
+          f'shared with library code outside the regions) looked for in {edition}: {found} found')
+    return found == 0
+
+
+def inject(root, edition):
+    """Put the instructor's solutions into the edition's holes: each open hole's exercise.cpp
+    becomes the solution, as a student who solved it would have written it."""
+    for nn, f in holes(root):
+        text = open(os.path.join(root, 'src', f), encoding='utf-8').read()
+        tut = [d for d in os.listdir(os.path.join(edition, 'tutorials')) if d.startswith(nn + '-')][0]
+        with open(os.path.join(edition, 'tutorials', tut, 'exercise.cpp'), 'w', encoding='utf-8') as o:
+            o.write(stubbed(text, []))
+    # The tutorials that are not holes: the instructor's solution file is the exercise
+    sol = os.path.join(root, 'tutorials/instructor/solutions')
+    for name in sorted(os.listdir(sol)):
+        shutil.copy(os.path.join(sol, name), os.path.join(edition, 'tutorials', name[:-4], 'exercise.cpp'))
+
+
+def main(argv):
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    opened = ALL
+    if '--open' in argv:
+        k = argv.index('--open')
+        opened = [s.strip() for s in argv[k + 1].split(',') if s.strip()]
+        del argv[k:k + 2]
+    if len(argv) >= 2 and argv[0] == 'export':
+        export(root, argv[1], opened)
+    elif len(argv) == 3 and argv[0] == 'stub':
+        sys.stdout.write(stubbed(open(argv[1], encoding='utf-8').read(), [argv[2]]))
+    elif len(argv) == 2 and argv[0] == 'leaks':
+        return 0 if leaks(root, argv[1], opened) else 1
+    elif len(argv) == 2 and argv[0] == 'inject':
+        inject(root, argv[1])
+    else:
+        print(__doc__)
+        return 2
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
