@@ -16,6 +16,7 @@
 #include "search/cylinder_cache.h"
 #include "search/direction_lists.h"
 #include "search/linear_search.h"
+#include "search/packed_spheres.h"
 #include "uniform.h"
 
 using namespace rc;
@@ -606,4 +607,54 @@ TEST_CASE("blocker+ in front of a hierarchy steps aside on paths whose rays most
     kept.run();
     REQUIRE(kept.counters().steppedAside < kept.counters().totalRays() / 3);
     REQUIRE(kept.counters().hits > 2 * kept.counters().steppedAside);
+}
+
+TEST_CASE("packed spheres test a list as testObjectQuickly does, four at a time or one", "[cache][packed]") {
+    // Random lists (spheres, polygons, the ray's own object), nearest first or not, against
+    // random rays: the same nearest hit, ties included, and the same count of tests
+    Random rng(42);
+    const Uniform u{-1.0, 1.0};
+    std::uint64_t hits = 0, cases = 0;
+    for (Layout layout : {Layout::Overlapping, Layout::Tangent, Layout::Nested, Layout::Polygons}) {
+        const Scene scene = testing::randomScene(layout, 7, 40);
+        const PackedSpheres packed(scene);
+        for (int k = 0; k < 3000; ++k) {
+            // A list of distinct ids, with made-up reaches, ascending
+            std::vector<int> ids;
+            for (int id = 0; id < scene.size(); ++id)
+                if (rng.index(3) == 0) ids.push_back(id);
+            std::vector<double> reach(ids.size());
+            for (std::size_t i = 0; i < ids.size(); ++i) reach[i] = 0.3 * double(i) + 0.5 * u(rng);
+            std::sort(reach.begin(), reach.end());
+            Query q;
+            q.origin = {k % 4 == 0 ? int(rng.index(scene.size())) : -1, false};
+            q.ray = Ray{Vec3(4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)), glm::normalize(Vec3(u(rng), u(rng), u(rng)))};
+            if (q.origin.object >= 0) q.ray.o = scene.objects[q.origin.object].bound.c;
+            q.tmax = k % 3 == 0 ? 2.0 + 3.0 * std::abs(u(rng)) : kNoHit;
+            for (const bool nearestFirst : {false, true}) {
+                const double* r = nearestFirst ? reach.data() : nullptr;
+                // The loop testBlockers() ran before
+                Answer want;
+                Counters wantN;
+                for (std::size_t i = 0; i < ids.size() && (!r || r[i] <= std::min(want.t, q.tmax)); ++i)
+                    testObjectQuickly(scene, q, ids[i], want, wantN);
+                Answer scalar, any;
+                Counters scalarN, anyN;
+                packed.testNearestFirstScalar(scene, q, ids.data(), r, ids.size(), scalar, scalarN);
+                packed.testNearestFirst(scene, q, ids.data(), r, ids.size(), any, anyN);
+                INFO(testing::name(layout) << " case " << k << " nearest first " << nearestFirst);
+                REQUIRE(scalar.object == want.object);
+                REQUIRE(scalar.t == want.t);
+                REQUIRE(any.object == want.object);
+                REQUIRE(any.t == want.t);
+                REQUIRE(scalarN.intersectionTests == wantN.intersectionTests);
+                REQUIRE(anyN.intersectionTests == wantN.intersectionTests);
+                hits += want.object >= 0;
+                ++cases;
+            }
+        }
+    }
+    // Both outcomes occur
+    REQUIRE(hits > cases / 10);
+    REQUIRE(hits < cases);
 }
