@@ -10,20 +10,6 @@
 namespace rc {
 
 namespace {
-/// One object of a list, whose quick rejection (as a sphere) is `rejected`: what
-/// testObjectQuickly() does with it.
-inline void visit(const Scene& scene, const Query& q, int id, const PackedSpheres::Packed& p, bool rejected,
-                  Answer& best, Counters& n) {
-    if (p.r2 < 0.0 || id == q.origin.object) {
-        testObject(scene, q, id, best, n);  // a polygon, a cone, or the surface the ray leaves
-        return;
-    }
-    ++n.intersectionTests;
-    if (rejected) return;
-    const double t = scene.intersect(q.ray, id, q.origin);
-    if (t < q.tmax && nearer(t, id, best)) best = {id, t};
-}
-
 #ifdef RC_PACKED_AVX2
 /// Four spheres at a time: clearlyMisses() on each, in the same operations in the same
 /// order (no fused multiply-add: this function's target has none), so the same bits.
@@ -69,13 +55,13 @@ __attribute__((target("avx2"))) void testFour(const Scene& scene, const Query& q
         // [packed-four]
         for (std::size_t j = 0; j < 4; ++j) {
             if (reach && !(reach[i + j] <= std::min(best.t, q.tmax))) return;
-            visit(scene, q, ids[i + j], all[ids[i + j]], (rejected >> j) & 1, best, n);
+            PackedSpheres::visit(scene, q, ids[i + j], all[ids[i + j]], (rejected >> j) & 1, best, n);
         }
     }
     for (; i < size; ++i) {
         if (reach && !(reach[i] <= std::min(best.t, q.tmax))) return;
         const PackedSpheres::Packed& p = all[ids[i]];
-        visit(scene, q, ids[i], p, p.r2 >= 0.0 && clearlyMisses(o, d, p.x, p.y, p.z, p.r2), best, n);
+        PackedSpheres::visit(scene, q, ids[i], p, p.r2 >= 0.0 && clearlyMisses(o, d, p.x, p.y, p.z, p.r2), best, n);
     }
 }
 #endif
@@ -100,8 +86,8 @@ bool PackedSpheres::simd() {
 #endif
 }
 
-void PackedSpheres::testNearestFirst(const Scene& scene, const Query& q, const int* ids, const double* reach,
-                                     std::size_t size, Answer& best, Counters& n) const {
+void PackedSpheres::testLong(const Scene& scene, const Query& q, const int* ids, const double* reach,
+                             std::size_t size, Answer& best, Counters& n) const {
 #ifdef RC_PACKED_AVX2
     if (simd()) {
         testFour(scene, q, spheres_.data(), ids, reach, size, best, n);
@@ -109,16 +95,6 @@ void PackedSpheres::testNearestFirst(const Scene& scene, const Query& q, const i
     }
 #endif
     testNearestFirstScalar(scene, q, ids, reach, size, best, n);
-}
-
-void PackedSpheres::testNearestFirstScalar(const Scene& scene, const Query& q, const int* ids, const double* reach,
-                                           std::size_t size, Answer& best, Counters& n) const {
-    const Vec3 o = q.ray.o, d = q.ray.d;
-    for (std::size_t i = 0; i < size; ++i) {
-        if (reach && !(reach[i] <= std::min(best.t, q.tmax))) return;
-        const Packed& p = spheres_[std::size_t(ids[i])];
-        visit(scene, q, ids[i], p, p.r2 >= 0.0 && clearlyMisses(o, d, p.x, p.y, p.z, p.r2), best, n);
-    }
 }
 
 }  // namespace rc
