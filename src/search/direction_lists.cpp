@@ -70,6 +70,11 @@ DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search,
     }
 }
 
+double DirectionLists::reachFrom(const Sphere& from, int id) const {
+    const Sphere& s = bounds_[std::size_t(id)];
+    return glm::length(s.c - from.c) - s.r - from.r - slack_;
+}
+
 std::size_t DirectionLists::nearestFirst(int site) {
     std::uint32_t& at = orderAt_[std::size_t(site)];
     if (at == kNoOrder) {
@@ -84,18 +89,18 @@ std::size_t DirectionLists::nearestFirst(int site) {
         }
         at = std::uint32_t(orders_.size());
         const Sphere from = sites_.siteSphere(site);
-        for (int id = 0; id < int(bounds_.size()); ++id) orders_.emplace_back(0.0, id);
+        sorting_.clear();
+        for (int id = 0; id < int(bounds_.size()); ++id) sorting_.emplace_back(reachFrom(from, id), id);
+        std::sort(sorting_.begin(), sorting_.end());
+        // Only the ids are kept: a cell's build recomputes the reach of the few it keeps
+        for (const auto& [reach, id] : sorting_) orders_.push_back(std::uint32_t(id));
         const auto first = orders_.begin() + std::ptrdiff_t(at);
-        for (auto it = first; it != orders_.end(); ++it)
-            it->first = glm::length(bounds_[std::size_t(it->second)].c - from.c) - bounds_[std::size_t(it->second)].r -
-                        from.r - slack_;
-        std::sort(first, orders_.end());
         // [site-order]
         // Each object's aim: a sphere of radius g at distance L subtends a half-angle
         // beta = asin(g / L); one the site's sphere reaches is seen in every direction
         const double reach = from.r + slack_;
         for (auto it = first; it != orders_.end(); ++it) {
-            const Sphere& s = bounds_[std::size_t(it->second)];
+            const Sphere& s = bounds_[*it];
             const Vec3 v = s.c - from.c;
             const double length = glm::length(v), g = s.r + reach;
             // Else all zero: the quick test cannot tell (0 is within its margin of 0), the exact one decides
@@ -173,7 +178,7 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
         // Those of the site's order, nearest first: a ray that has hit something at t
         // cannot hit first what lies farther
         const std::size_t at = nearestFirst(site);
-        const std::pair<double, int>* order = orders_.data() + at;
+        const std::uint32_t* order = orders_.data() + at;
         const double reach = from.r + slack_, sinA = std::sqrt(1.0 - cone.cosHalf * cone.cosHalf);
         // [cell-quick-test]
         // The sphere meets the cone when its direction is within alpha + beta of the axis:
@@ -206,8 +211,8 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
             }
             if (kept[k] == 2 ||
                 (kept[k] == 1 &&
-                 coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[std::size_t(order[k].second)]) <= 0.0))
-                found_.push_back(order[k]);
+                 coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[order[k]]) <= 0.0))
+                found_.emplace_back(reachFrom(from, int(order[k])), int(order[k]));
         }
         // [cell-quick-test]
         list.ids.resize(found_.size());

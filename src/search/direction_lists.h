@@ -63,7 +63,9 @@ private:
     /// Every object seen from `site`, nearest first (by reach, then id): sorted the first
     /// time one of the site's cells is built, and shared by all of them.
     std::size_t nearestFirst(int site);
-    /// Scenes whose sites' orders would hold more entries (objects x sites) than this, 16
+    /// The reach from `from` of object `id`'s bounding sphere: as fillNearestFirst() computes it
+    double reachFrom(const Sphere& from, int id) const;
+    /// Scenes whose sites' orders would hold more entries (objects x sites) than this, 4
     /// bytes and 20 bytes each, find each cell's objects through the complete search's cull and sort them
     static constexpr std::size_t kMostOrderEntries = std::size_t(1) << 21;
     const Scene& scene_;
@@ -75,7 +77,10 @@ private:
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
     /// Per site: where its order starts in orders_, or kNoOrder (empty: none kept, see kMostOrderEntries)
     std::vector<std::uint32_t> orderAt_;
-    std::vector<std::pair<double, int>> orders_;  ///< the sites' orders, one after another
+    /// The sites' orders, one after another: object ids only (a reach is recomputed, the
+    /// same double, for the objects a cell keeps)
+    std::vector<std::uint32_t> orders_;
+    std::vector<std::pair<double, int>> sorting_;  ///< scratch: a site's (reach, id) pairs as they are sorted
     /// Beside each entry of orders_: the object's direction from the site (x, y, z) and the
     /// cosine and sine of the half-angle its grown sphere subtends, in single precision and
     /// in arrays of their own, so one loop tests many at once: a quick test that only ever
