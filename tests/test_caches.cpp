@@ -16,6 +16,7 @@
 #include "search/cylinder_cache.h"
 #include "search/direction_lists.h"
 #include "search/linear_search.h"
+#include "search/packed_spheres.h"
 #include "uniform.h"
 
 using namespace rc;
@@ -606,4 +607,94 @@ TEST_CASE("blocker+ in front of a hierarchy steps aside on paths whose rays most
     kept.run();
     REQUIRE(kept.counters().steppedAside < kept.counters().totalRays() / 3);
     REQUIRE(kept.counters().hits > 2 * kept.counters().steppedAside);
+}
+
+TEST_CASE("a direction list picked from its site's order is the list the cull finds and sorts", "[cache][directions]") {
+    // Every cell of every object and tile site, and a sample of the eye's: the same objects
+    // in the same order with the same reaches, whichever way the list was built
+    const std::string rings = std::string(RAYCACHE_SCENES_DIR) + "/rings2.nff";
+    for (const std::string& spec : {std::string("cube:4"), std::string("balls:2"), std::string("glass"), rings}) {
+        const Scene scene = loadScene(spec);
+        const LinearSearch linear(scene);
+        const BlockerLists sites(scene, linear, true);
+        DirectionLists picked(scene, linear, sites), culled(scene, linear, sites, false);
+        Counters n;
+        std::uint64_t compared = 0, entries = 0;
+        for (int site = 0; site < sites.sites(); ++site) {
+            if (sites.siteObject(site) < 0 && site != sites.eyeSite()) continue;  // lights have no direction lists
+            const bool eye = site == sites.eyeSite();
+            const int side = eye ? DirectionLists::kEyeCellsPerSide : DirectionLists::kCellsPerSide;
+            for (int cell = 0; cell < 6 * side * side; cell += eye ? 7 : 1) {
+                // A direction inside the cell: its square's centre on its face
+                const int face = cell / (side * side), i = cell / side % side, j = cell % side;
+                Vec3 d{0.0};
+                d[face / 2] = face % 2 ? -1.0 : 1.0;
+                d[(face / 2 + 1) % 3] = -1.0 + (2.0 * i + 1.0) / side;
+                d[(face / 2 + 2) % 3] = -1.0 + (2.0 * j + 1.0) / side;
+                d = glm::normalize(d);
+                REQUIRE(DirectionLists::cell(d, side) == cell);
+                std::uint32_t m1 = std::uint32_t(-1), m2 = std::uint32_t(-1);
+                const BlockerList& a = picked.get(site, d, m1, n);
+                const BlockerList& b = culled.get(site, d, m2, n);
+                INFO(spec << ": site " << site << " cell " << cell);
+                REQUIRE(a.ids == b.ids);
+                REQUIRE(a.reach == b.reach);
+                ++compared;
+                entries += a.ids.size();
+            }
+        }
+        INFO(spec);
+        REQUIRE(compared > 100);
+        REQUIRE(entries > compared);  // the lists compared are not all empty
+    }
+}
+
+TEST_CASE("packed spheres test a list as testObjectQuickly does, four at a time or one", "[cache][packed]") {
+    // Random lists (spheres, polygons, the ray's own object), nearest first or not, against
+    // random rays: the same nearest hit, ties included, and the same count of tests
+    Random rng(42);
+    const Uniform u{-1.0, 1.0};
+    std::uint64_t hits = 0, cases = 0;
+    for (Layout layout : {Layout::Overlapping, Layout::Tangent, Layout::Nested, Layout::Polygons}) {
+        const Scene scene = testing::randomScene(layout, 7, 40);
+        const PackedSpheres packed(scene);
+        for (int k = 0; k < 3000; ++k) {
+            // A list of distinct ids, with made-up reaches, ascending
+            std::vector<int> ids;
+            for (int id = 0; id < scene.size(); ++id)
+                if (rng.index(3) == 0) ids.push_back(id);
+            std::vector<double> reach(ids.size());
+            for (std::size_t i = 0; i < ids.size(); ++i) reach[i] = 0.3 * double(i) + 0.5 * u(rng);
+            std::sort(reach.begin(), reach.end());
+            Query q;
+            q.origin = {k % 4 == 0 ? int(rng.index(scene.size())) : -1, false};
+            q.ray = Ray{Vec3(4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)), glm::normalize(Vec3(u(rng), u(rng), u(rng)))};
+            if (q.origin.object >= 0) q.ray.o = scene.objects[q.origin.object].bound.c;
+            q.tmax = k % 3 == 0 ? 2.0 + 3.0 * std::abs(u(rng)) : kNoHit;
+            for (const bool nearestFirst : {false, true}) {
+                const double* r = nearestFirst ? reach.data() : nullptr;
+                // The loop testBlockers() ran before
+                Answer want;
+                Counters wantN;
+                for (std::size_t i = 0; i < ids.size() && (!r || r[i] <= std::min(want.t, q.tmax)); ++i)
+                    testObjectQuickly(scene, q, ids[i], want, wantN);
+                Answer scalar, any;
+                Counters scalarN, anyN;
+                packed.testNearestFirstScalar(scene, q, ids.data(), r, ids.size(), scalar, scalarN);
+                packed.testNearestFirst(scene, q, ids.data(), r, ids.size(), any, anyN);
+                INFO(testing::name(layout) << " case " << k << " nearest first " << nearestFirst);
+                REQUIRE(scalar.object == want.object);
+                REQUIRE(scalar.t == want.t);
+                REQUIRE(any.object == want.object);
+                REQUIRE(any.t == want.t);
+                REQUIRE(scalarN.intersectionTests == wantN.intersectionTests);
+                REQUIRE(anyN.intersectionTests == wantN.intersectionTests);
+                hits += want.object >= 0;
+                ++cases;
+            }
+        }
+    }
+    // Both outcomes occur
+    REQUIRE(hits > cases / 10);
+    REQUIRE(hits < cases);
 }

@@ -21,7 +21,7 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
-      lists_(scene, search, plus_, plus_), cylinders_(scene, search) {
+      lists_(scene, search, plus_, plus_), cylinders_(scene, search), packed_(scene) {
     if (plus_) byOrigin_.assign(3 * (std::size_t(scene.size()) + 1), kNotKept);
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
@@ -200,15 +200,10 @@ Lookup BlockerCache::shadow(const Query& q, CacheEntry& e, MissReason why, Looku
 
 void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer& best, Counters& n) const {
     // [test-blockers]
-    const std::size_t size = list.ids.size();
-    if (!plus_) {
-        // The paper: every potential blocker is tested
-        for (std::size_t i = 0; i < size; ++i) testObjectQuickly(scene_, q, list.ids[i], best, n);
-        return;
-    }
-    // Blocker+: nearest first, and none beyond the nearest hit known (or the light) can come first
-    for (std::size_t i = 0; i < size && list.reach[i] <= std::min(best.t, q.tmax); ++i)
-        testObjectQuickly(scene_, q, list.ids[i], best, n);
+    // The paper: every potential blocker is tested. Blocker+: nearest first, and none
+    // beyond the nearest hit known (or the light) can come first. Four spheres are
+    // rejected at a time where the processor can (PackedSpheres): the same answers and counts
+    packed_.testNearestFirst(scene_, q, list.ids.data(), plus_ ? list.reach.data() : nullptr, list.ids.size(), best, n);
     // [test-blockers]
 }
 

@@ -7,6 +7,7 @@
 #include "search/cache_strategy.h"
 #include "search/cylinder_of_safety.h"
 #include "search/direction_lists.h"
+#include "search/packed_spheres.h"
 
 namespace rc {
 
@@ -88,6 +89,8 @@ private:
     /// Blocker+dir in front of the linear scan: the objects in each direction from each site
     /// (elsewhere blocker+dir is blocker+)
     std::unique_ptr<DirectionLists> directions_;
+    /// Every sphere by id, for testing lists four at a time
+    PackedSpheres packed_;
 };
 
 }  // namespace rc

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -20,6 +21,22 @@ Vec3 faceDirection(int face, double x, double y) {
     return glm::normalize(d);
 }
 
+/// How far sphere s lies from the cone of rays from `apex` around `axis` (half-angle whose
+/// cosine and sine are cosA and sinA), less `reach` (negative: they meet).
+inline double coneDistance(const Vec3& apex, double reach, const Vec3& axis, double cosA, double sinA,
+                           const Sphere& s) {
+    // [cone-distance]
+    // The distance from the sphere to the cone (negative inside), measured in the half-plane
+    // through the axis: x along it, y away from it. Beside the cone's side it is the
+    // distance to the side; behind the apex, to the apex. A distance is 1-Lipschitz: a lower
+    // bound for any sphere inside s
+    const Vec3 v = s.c - apex;
+    const double x = glm::dot(v, axis), y = glm::length(glm::cross(v, axis));
+    const double side = x * cosA + y * sinA < 0.0 ? glm::length(v) : y * cosA - x * sinA;
+    return side - s.r - reach;
+    // [cone-distance]
+}
+
 /// The objects whose bounding spheres rays leaving a ball in a cone of directions can meet:
 /// those whose spheres, grown by the ball's radius, meet the cone of rays from its centre
 /// (a ray from a point of the ball runs parallel to one from the centre, never farther
@@ -30,18 +47,7 @@ struct CellCull final : SphereCull {
           out(out) {
         limit = 0.0;
     }
-    // [cone-distance]
-    // The distance from the sphere to the cone (negative inside), measured in the half-plane
-    // through the axis: x along it, y away from it. Beside the cone's side it is the
-    // distance to the side; behind the apex, to the apex. A distance is 1-Lipschitz: a lower
-    // bound for any sphere inside s
-    double distance(const Sphere& s) override {
-        const Vec3 v = s.c - apex;
-        const double x = glm::dot(v, axis), y = glm::length(glm::cross(v, axis));
-        const double side = x * cosA + y * sinA < 0.0 ? glm::length(v) : y * cosA - x * sinA;
-        return side - s.r - reach;
-    }
-    // [cone-distance]
+    double distance(const Sphere& s) override { return coneDistance(apex, reach, axis, cosA, sinA, s); }
     void found(int id, double) override {
         out.emplace_back(0.0, id);  // its reach is set once the list is known
     }
@@ -53,9 +59,61 @@ struct CellCull final : SphereCull {
 };
 }  // namespace
 
-DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites)
+DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites,
+                               bool siteOrders)
     : scene_(scene), search_(search), sites_(sites) {
     slack_ = 1e-9 * scene.extent();
+    if (siteOrders && std::size_t(scene.size()) * std::size_t(sites.sites()) <= kMostOrderEntries) {
+        orderAt_.assign(std::size_t(sites.sites()), kNoOrder);
+        bounds_.reserve(scene.objects.size());
+        for (const Object& o : scene.objects) bounds_.push_back(o.bound);
+    }
+}
+
+double DirectionLists::reachFrom(const Sphere& from, int id) const {
+    const Sphere& s = bounds_[std::size_t(id)];
+    return glm::length(s.c - from.c) - s.r - from.r - slack_;
+}
+
+std::size_t DirectionLists::nearestFirst(int site) {
+    std::uint32_t& at = orderAt_[std::size_t(site)];
+    if (at == kNoOrder) {
+        // [site-order]
+        // Every object by its reach from the site, as fillNearestFirst() orders a list: a
+        // cell's list is then the objects of this order its cone of rays meets, in order
+        if (orders_.capacity() == 0) {
+            // Room for every site at once (no copy as it grows: pages are touched as used)
+            const std::size_t all = orderAt_.size() * bounds_.size();
+            orders_.reserve(all);
+            for (std::vector<float>* aim : {&aimX_, &aimY_, &aimZ_, &aimCos_, &aimSin_}) aim->reserve(all);
+        }
+        at = std::uint32_t(orders_.size());
+        const Sphere from = sites_.siteSphere(site);
+        sorting_.clear();
+        for (int id = 0; id < int(bounds_.size()); ++id) sorting_.emplace_back(reachFrom(from, id), id);
+        std::sort(sorting_.begin(), sorting_.end());
+        // Only the ids are kept: a cell's build recomputes the reach of the few it keeps
+        for (const auto& [reach, id] : sorting_) orders_.push_back(std::uint32_t(id));
+        const auto first = orders_.begin() + std::ptrdiff_t(at);
+        // [site-order]
+        // Each object's aim: a sphere of radius g at distance L subtends a half-angle
+        // beta = asin(g / L); one the site's sphere reaches is seen in every direction
+        const double reach = from.r + slack_;
+        for (auto it = first; it != orders_.end(); ++it) {
+            const Sphere& s = bounds_[*it];
+            const Vec3 v = s.c - from.c;
+            const double length = glm::length(v), g = s.r + reach;
+            // Else all zero: the quick test cannot tell (0 is within its margin of 0), the exact one decides
+            const bool seen = length > g * (1.0 + 1e-6);
+            const double sinB = seen ? g / length : 0.0;
+            aimX_.push_back(seen ? float(v.x / length) : 0.0f);
+            aimY_.push_back(seen ? float(v.y / length) : 0.0f);
+            aimZ_.push_back(seen ? float(v.z / length) : 0.0f);
+            aimCos_.push_back(seen ? float(std::sqrt(1.0 - sinB * sinB)) : 0.0f);
+            aimSin_.push_back(float(sinB));
+        }
+    }
+    return at;
 }
 
 DirectionLists::CellCone DirectionLists::cellCone(int cell, int side) {
@@ -115,12 +173,61 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
     // Every object whose bounding sphere a ray from the site's sphere in the cell can meet
     const Sphere from = sites_.siteSphere(site);
     const CellCone cone = cellCone(cell, side(site));
-    found_.clear();
-    CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, found_);
-    search_.cull(cull);
     ++n.directionListsBuilt;
-    // Nearest first: a ray that has hit something at t cannot hit first what lies farther
-    fillNearestFirst(list, scene_, from, slack_, found_);
+    if (!orderAt_.empty()) {
+        // Those of the site's order, nearest first: a ray that has hit something at t
+        // cannot hit first what lies farther
+        const std::size_t at = nearestFirst(site);
+        const std::uint32_t* order = orders_.data() + at;
+        const double reach = from.r + slack_, sinA = std::sqrt(1.0 - cone.cosHalf * cone.cosHalf);
+        // [cell-quick-test]
+        // The sphere meets the cone when its direction is within alpha + beta of the axis:
+        // cos(angle) >= cos(alpha + beta) = cos(alpha) cos(beta) - sin(alpha) sin(beta). In single
+        // precision, with a margin a thousand times its rounding, the quick test keeps every
+        // object the exact distance keeps and drops every other one, but for those near
+        // the cone's edge, which the exact distance decides
+        const float ax = float(cone.axis.x), ay = float(cone.axis.y), az = float(cone.axis.z);
+        const float cosA = float(cone.cosHalf), sinAf = float(sinA);
+        const std::size_t count = bounds_.size();
+        const float *x = aimX_.data() + at, *y = aimY_.data() + at, *z = aimZ_.data() + at;
+        const float *cosB = aimCos_.data() + at, *sinB = aimSin_.data() + at;
+        kept_.resize(count);
+        unsigned char* kept = kept_.data();
+        // 0: clearly outside, 2: clearly inside, 1: too near the edge to tell (the exact distance tells)
+        for (std::size_t k = 0; k < count; ++k) {  // no branch: the compiler tests several at once
+            const float aim = x[k] * ax + y[k] * ay + z[k] * az, edge = cosA * cosB[k] - sinAf * sinB[k];
+            kept[k] = (unsigned char)((aim >= edge - 1e-4f) + (aim >= edge + 1e-4f));
+        }
+        found_.clear();
+        for (std::size_t k = 0; k < count; ++k) {
+            // Most objects are clearly outside: eight verdicts of 0 at a time are skipped
+            if (k % 8 == 0 && k + 8 <= count) {
+                std::uint64_t eight;
+                std::memcpy(&eight, kept + k, 8);
+                if (eight == 0) {
+                    k += 7;
+                    continue;
+                }
+            }
+            if (kept[k] == 2 ||
+                (kept[k] == 1 &&
+                 coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[order[k]]) <= 0.0))
+                found_.emplace_back(reachFrom(from, int(order[k])), int(order[k]));
+        }
+        // [cell-quick-test]
+        list.ids.resize(found_.size());
+        list.reach.resize(found_.size());
+        for (std::size_t k = 0; k < found_.size(); ++k) {
+            list.reach[k] = found_[k].first;
+            list.ids[k] = found_[k].second;
+        }
+    } else {
+        // A large scene: the cull finds them, then they are sorted
+        found_.clear();
+        CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, found_);
+        search_.cull(cull);
+        fillNearestFirst(list, scene_, from, slack_, found_);
+    }
     // [build-direction-list]
     n.directionListEntries += list.ids.size();
 }

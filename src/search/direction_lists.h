@@ -32,7 +32,10 @@ public:
     /// And around the eye
     static constexpr int kEyeCellsPerSide = 32;
     /// Sites are those of `sites` (objects, the eye, tiles); candidates come from `search`.
-    DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites);
+    /// `siteOrders`: each site sorts every object once and its cells pick theirs from that
+    /// order, where the scene is small enough (kMostOrderEntries); else (or false) each
+    /// cell culls through `search` and sorts its own. The lists are the same.
+    DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites, bool siteOrders = true);
 
     /// The cell of unit direction `d`, with `side` cells per side of a face.
     static int cell(const Vec3& d, int side);
@@ -42,7 +45,8 @@ public:
     const BlockerList& get(int site, const Vec3& d, std::uint32_t& memo, Counters& n);
     /// Lists built so far (in the order built).
     std::size_t size() const { return lists_.size(); }
-    /// Forgets every list but the first `n` built.
+    /// Forgets every list but the first `n` built (the sites' orders, which depend on the
+    /// scene alone, are kept).
     void truncate(std::size_t n);
 
 private:
@@ -56,6 +60,14 @@ private:
     /// Cells per side of a face around `site`.
     int side(int site) const;
     void build(BlockerList& list, int site, int cell, Counters& n);
+    /// Every object seen from `site`, nearest first (by reach, then id): sorted the first
+    /// time one of the site's cells is built, and shared by all of them.
+    std::size_t nearestFirst(int site);
+    /// The reach from `from` of object `id`'s bounding sphere: as fillNearestFirst() computes it
+    double reachFrom(const Sphere& from, int id) const;
+    /// Scenes whose sites' orders would hold more entries (objects x sites) than this, 4
+    /// bytes and 20 bytes each, find each cell's objects through the complete search's cull and sort them
+    static constexpr std::size_t kMostOrderEntries = std::size_t(1) << 21;
     const Scene& scene_;
     const CompleteSearch& search_;
     const BlockerLists& sites_;
@@ -63,6 +75,20 @@ private:
     std::deque<BlockerList> lists_;
     ListTable table_;
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
+    /// Per site: where its order starts in orders_, or kNoOrder (empty: none kept, see kMostOrderEntries)
+    std::vector<std::uint32_t> orderAt_;
+    /// The sites' orders, one after another: object ids only (a reach is recomputed, the
+    /// same double, for the objects a cell keeps)
+    std::vector<std::uint32_t> orders_;
+    std::vector<std::pair<double, int>> sorting_;  ///< scratch: a site's (reach, id) pairs as they are sorted
+    /// Beside each entry of orders_: the object's direction from the site (x, y, z) and the
+    /// cosine and sine of the half-angle its grown sphere subtends, in single precision and
+    /// in arrays of their own, so one loop tests many at once: a quick test that only ever
+    /// keeps too many objects, the exact one deciding (build())
+    std::vector<float> aimX_, aimY_, aimZ_, aimCos_, aimSin_;
+    std::vector<unsigned char> kept_;  ///< scratch: the quick test's verdicts on a site's order
+    std::vector<Sphere> bounds_;  ///< every object's bounding sphere, by id, in one array
+    static constexpr std::uint32_t kNoOrder = std::uint32_t(-1);
 };
 
 }  // namespace rc

@@ -23,7 +23,11 @@
 #include "scene/builtin_scenes.h"
 #include "search/accelerator.h"
 #include "search/cache_strategy.h"
+#include "search/direction_lists.h"
+#include "search/linear_search.h"
 #include "search/list_table.h"
+#include "search/packed_spheres.h"
+#include "search/sphere_batch.h"
 #include "view/block_vector.h"
 #include "view/event_record.h"
 #include "../uniform.h"
@@ -224,4 +228,67 @@ TEST_CASE("containers: ListTable against std::unordered_map", "[containers]") {
         for (std::uint32_t i = 0; i < keys.size(); ++i) m.emplace(keys[i], i);
         return m.size();
     };
+}
+
+TEST_CASE("a list tested four spheres at a time against one at a time", "[packed]") {
+    // A direction list's worth of cube:8's spheres (every third one) against eye rays: the
+    // loop blocker caches ran before, the packed scalar loop, and the AVX2 one where the
+    // processor has it (else the same scalar loop)
+    const Scene scene = makeBuiltin("cube:8");
+    const PackedSpheres packed(scene);
+    std::vector<int> ids;
+    for (int id = 0; id < scene.size(); id += 3) ids.push_back(id);
+    const std::vector<Ray> rays = randomRays(64, 8);
+    auto run = [&](auto test) {
+        Counters n;
+        int found = 0;
+        for (const Ray& r : rays) {
+            Query q;
+            q.ray = r;
+            Answer best;
+            test(q, best, n);
+            found += best.object;
+        }
+        return found + int(n.intersectionTests);
+    };
+    std::printf("packed spheres: AVX2 %s\n", PackedSpheres::simd() ? "on" : "off (scalar)");
+    BENCHMARK("testObjectQuickly, one at a time: 64 rays x 171 ids") {
+        return run([&](const Query& q, Answer& best, Counters& n) {
+            for (int id : ids) testObjectQuickly(scene, q, id, best, n);
+        });
+    };
+    BENCHMARK("PackedSpheres scalar: 64 rays x 171 ids") {
+        return run([&](const Query& q, Answer& best, Counters& n) {
+            packed.testNearestFirstScalar(scene, q, ids.data(), nullptr, ids.size(), best, n);
+        });
+    };
+    BENCHMARK("PackedSpheres, picked at run time: 64 rays x 171 ids") {
+        return run([&](const Query& q, Answer& best, Counters& n) {
+            packed.testNearestFirst(scene, q, ids.data(), nullptr, ids.size(), best, n);
+        });
+    };
+}
+
+TEST_CASE("direction lists picked from their site's order against culled and sorted", "[directions]") {
+    // Every cell of 40 of cube:8's objects, built anew each time: the lists are the same
+    const Scene scene = makeBuiltin("cube:8");
+    const LinearSearch linear(scene);
+    const BlockerLists sites(scene, linear, true);
+    auto build = [&](bool siteOrders) {
+        DirectionLists lists(scene, linear, sites, siteOrders);
+        Counters n;
+        for (int site = 0; site < 40; ++site)
+            for (int cell = 0; cell < 24; ++cell) {
+                const int face = cell / 4, i = cell / 2 % 2, j = cell % 2;
+                Vec3 d{0.0};
+                d[face / 2] = face % 2 ? -1.0 : 1.0;
+                d[(face / 2 + 1) % 3] = i ? 0.5 : -0.5;
+                d[(face / 2 + 2) % 3] = j ? 0.5 : -0.5;
+                std::uint32_t memo = std::uint32_t(-1);
+                lists.get(site, glm::normalize(d), memo, n);
+            }
+        return n.directionListEntries;
+    };
+    BENCHMARK("culled through the hierarchy and sorted: 960 lists") { return build(false); };
+    BENCHMARK("picked from each site's order: 960 lists") { return build(true); };
 }
