@@ -1026,6 +1026,7 @@ bool MainWindow::apply(const GuiOptions& o, bool wait) {
     options_.cache = o.cache;
     options_.order = o.order;
     options_.accel = o.accel;
+    options_.band = o.band;
     options_.shading.sampling = o.sampling;
     options_.width = std::max(0, o.width);
     options_.height = std::max(0, o.height);
