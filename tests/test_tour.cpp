@@ -92,8 +92,28 @@ TEST_CASE("the shipped tours parse", "[tour]") {
         INFO(entry.path().string());
         REQUIRE(!t.title.empty());
         REQUIRE(!t.stops.empty());
+        // Every stop's scene, pixel, path, focus and claims hold, as when a front end opens it
+        REQUIRE_NOTHROW(rc::checkTour(t));
     }
     REQUIRE(files >= 2);
+}
+
+TEST_CASE("a tour whose stop 5 selects a path its pixel does not have fails when checked, naming stop 5", "[tour]") {
+    std::string text = "{\"stops\": [";
+    for (int k = 1; k <= 6; ++k)
+        text += std::string(k > 1 ? "," : "") + "\n {\"title\": \"S" + std::to_string(k) +
+                "\", \"caption\": \"c.\", \"scene\": \"pair\", \"width\": 32, \"height\": 32, \"select\": \"16,16" +
+                (k == 5 ? ":eye/refraction" : "") + "\"}";
+    text += "]}";
+    const rc::Tour t = rc::parseTour(text, "five.json");
+    try {
+        rc::checkTour(t);
+        FAIL("stop 5 was accepted");
+    } catch (const rc::TourError& e) {
+        INFO(e.what());
+        REQUIRE(std::string(e.what()).rfind("five.json:6:", 0) == 0);
+        REQUIRE(std::string(e.what()).find("stop 5 (S5): select: ") != std::string::npos);
+    }
 }
 
 TEST_CASE("a stop's claims are read, parsed and checked against what the stop draws", "[tour][claims]") {
