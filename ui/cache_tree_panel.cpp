@@ -6,16 +6,20 @@
 #include <QHeaderView>
 
 #include "labels.h"
+#include "palette.h"
 
 namespace rcgui {
 
 CacheTreePanel::CacheTreePanel(QWidget* parent) : QTreeWidget(parent) {
-    setHeaderLabels({"path", "state", "origin", "object", "holds"});
+    // What a lecture reads first comes first: the step (the tree's indentation gives the
+    // rest of the path), whether the entry is loaded or flushed, what it holds
+    setHeaderLabels({"path", "state", "object", "holds", "origin"});
+    setIndentation(14);
     setAlternatingRowColors(true);
     header()->setSectionResizeMode(QHeaderView::ResizeToContents);
 }
 
-void CacheTreePanel::refresh(const rc::SessionState* state) {
+void CacheTreePanel::refresh(const rc::SessionState* state, int focusNode) {
     if (!state) return;
     const rc::CacheTree& tree = state->session().cacheTree();
     const rc::BlockerLists* lists = state->session().strategy().blockerLists();
@@ -39,11 +43,21 @@ void CacheTreePanel::refresh(const rc::SessionState* state) {
         }
         items[i] = item;
         const rc::CacheEntry& e = tree.entry(i);
-        item->setText(0, QString::fromStdString(tree.label(i)));
-        item->setText(1, e.state == rc::CacheEntry::State::Loaded ? "loaded"
-                         : e.state == rc::CacheEntry::State::Flushed ? "flushed" : "empty");
-        item->setText(2, e.origin.object < 0 ? QString("eye") : objectLabel(scene, e.origin.object) + (e.origin.inside ? " (inside)" : ""));
-        item->setText(3, e.state == rc::CacheEntry::State::Empty ? QString() : objectLabel(scene, e.object));
+        // The step this node adds to its parent's path; the whole path in the tooltip
+        const QString path = QString::fromStdString(tree.label(i));
+        item->setText(0, path.section('/', -1));
+        item->setToolTip(0, path);
+        const bool flushed = e.state == rc::CacheEntry::State::Flushed;
+        item->setText(1, e.state == rc::CacheEntry::State::Loaded ? "loaded" : flushed ? "flushed" : "empty");
+        item->setText(4, e.origin.object < 0 ? QString("eye") : objectLabel(scene, e.origin.object) + (e.origin.inside ? " (inside)" : ""));
+        item->setText(2, e.state == rc::CacheEntry::State::Empty ? QString() : objectLabel(scene, e.object));
+        // A flush shows: the flushed entries in the flushed-miss colour, the focused ray's bold
+        for (int c = 0; c < columnCount(); ++c) {
+            item->setBackground(c, flushed ? QBrush(palette::missReason(rc::MissReason::Flushed).darker(170)) : QBrush());
+            QFont f = item->font(c);
+            f.setBold(i == focusNode);
+            item->setFont(c, f);
+        }
         QString holds;
         // The list of the entry's pair: its origin and its object (a shadow entry: its light).
         // On a tiled polygon the lists are kept per tile, and found from the ray (overlays).
@@ -66,7 +80,7 @@ void CacheTreePanel::refresh(const rc::SessionState* state) {
                         ? QString("cylinder R < %1, not measured yet").arg(e.cylinderBelow, 0, 'g', 4)
                         : QString("built when next used");
         }
-        item->setText(4, holds);
+        item->setText(3, holds);
     }
 }
 

@@ -13,8 +13,9 @@ class CacheTreePanel : public QTreeWidget {
     Q_OBJECT
 public:
     explicit CacheTreePanel(QWidget* parent = nullptr);
-    /// Rebuilds from `state` (null: a worker is running; the panel is left as is).
-    void refresh(const rc::SessionState* state);
+    /// Rebuilds from `state` (null: a worker is running; the panel is left as is); the
+    /// entry of path `focusNode` (the ray in focus) is bold, flushed entries coloured.
+    void refresh(const rc::SessionState* state, int focusNode = -1);
 };
 
 }  // namespace rcgui

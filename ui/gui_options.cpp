@@ -116,6 +116,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption window("window", "window size of screenshots (default 1600x1000)", "WxH");
     const QCommandLineOption select("select", "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray)", "x,y[:path]");
     const QCommandLineOption accel("accel", searchNames().join(" | ") + ": what answers complete searches (default linear)", "kind");
+    const QCommandLineOption band("band", "breadth-first and progressive orders: scanlines per band, 0 for the whole image (default: by cache and search, as raycache render)", "N");
     const QCommandLineOption zoom("zoom", "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel", "F");
     const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
     const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
@@ -140,7 +141,7 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
     const QCommandLineOption panels("panels", "the panels to show: " + panelNames().join(", ") + ", all or none", "list");
     const QCommandLineOption run("run", "after --steps, trace on to the next-miss (of --miss-reason, if given) or next-deferral, and focus on it", "goal");
     const QCommandLineOption walk("walk", "quit once shown (with --tour: show every stop from --stop on in turn, then quit): for --frame-log");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, record, every, zoom, large,
+    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, band, record, every, zoom, large,
                           present, compare, sceneView, orbit, spp, lightRadius, shadowSamples, gloss, glossSamples, seed,
                           tour, stop, focus, missReason, frameLog, panels, run, walk})
         p.addOption(o);
@@ -282,6 +283,10 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         if (!k || rc::searchRegistry()[std::size_t(*k)].comparisonOnly) { message = "--accel must be " + oneOf(searchNames()) + ", not '" + p.value(accel) + "'"; return ParseResult::Error; }
         out.accel = *k;
     }
+    if (p.isSet(band) && !parseInt(p.value(band), 0, 100000, out.band)) {
+        message = "--band must be a whole number of scanlines >= 0 (0: the whole image), not '" + p.value(band) + "'";
+        return ParseResult::Error;
+    }
     if (p.isSet(zoom)) {
         bool ok = false;
         out.zoom = p.value(zoom).toDouble(&ok);
@@ -349,7 +354,7 @@ std::optional<GuiOptions> stopOptions(const rc::Tour& tour, int stop, const GuiO
     QStringList args{"raycache-gui"};
     for (const rc::TourSetting& s : st.settings) {
         if (s.key == "scene") {
-            args << QString::fromStdString(s.value);
+            args << QString::fromStdString(rc::stopScene(tour, st));  // a relative path: beside the tour
             continue;
         }
         args << "--" + QString::fromStdString(s.key);

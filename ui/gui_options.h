@@ -56,6 +56,7 @@ struct GuiOptions {
     QPoint select{-1, -1};       ///< pixel to inspect
     QString selectPath;          ///< its ray at this path (cache-tree label, e.g. eye/reflection); empty: the eye ray
     rc::AccelKind accel = rc::AccelKind::Linear;
+    int band = rc::kAutoBand;    ///< scanlines per band of breadth-first and progressive orders (0: all)
     rc::Sampling sampling;       ///< distributed ray tracing (--spp, --light-radius, ...), as raycache render takes it
     double zoom = 1.0;           ///< screenshots: zoom relative to "fit", about the ray being traced
     bool largeFonts = false;

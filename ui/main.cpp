@@ -45,6 +45,13 @@ int main(int argc, char** argv) {
             }
             stops.push_back(*o);
         }
+        // What the flags cannot say: each stop's scene opens, its pixel, path and claims hold
+        try {
+            rc::checkTour(tour);
+        } catch (const rc::TourError& e) {
+            err << "raycache-gui: " << e.what() << Qt::endl;
+            return 2;
+        }
         if (opt.stop > int(stops.size())) {
             err << "raycache-gui: --stop " << opt.stop << ": " << opt.tour << " has " << stops.size() << " stops" << Qt::endl;
             return 2;

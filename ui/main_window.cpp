@@ -774,16 +774,26 @@ void MainWindow::setPresentation(bool on) {
         for (QDockWidget* d : raisedBeforePresent_) d->raise();
     for (QToolBar* t : findChildren<QToolBar*>())
         if (t->objectName() == "render") t->setVisible(!on);
-    const bool large = on || fontsBeforePresent_;
-    if (largeAct_) largeAct_->setChecked(large);
-    else setLargeFonts(large);
+    // Presenting: larger still than large fonts (setLargeFonts reads presenting_)
+    setLargeFonts(on || fontsBeforePresent_);
     view_->fit();
 }
 
 void MainWindow::showPanels(const QStringList& names) {
     for (int i = 0; i < int(docks_.size()); ++i) {
         const bool on = names.contains(panelNames()[i]);
-        docks_[std::size_t(i)]->setVisible(on);
+        QDockWidget* d = docks_[std::size_t(i)];
+        // Presenting: the stop's panels are what leaving presentation brings back
+        if (presenting_) {
+            shownBeforePresent_.removeAll(d);
+            raisedBeforePresent_.removeAll(d);
+            if (on) {
+                shownBeforePresent_ << d;
+                raisedBeforePresent_ << d;
+            }
+            continue;
+        }
+        d->setVisible(on);
         if (on) docks_[std::size_t(i)]->raise();
     }
 }
@@ -795,9 +805,11 @@ void MainWindow::setLargeFonts(bool on) {
         largeAct_->setChecked(on);
     }
     if (stats_) stats_->setLargeFonts(on);
-    overlays_.lineScale = on ? 1.8 : 1.0;
+    // Points of the text: large fonts for a projector, larger still when presenting
+    constexpr double kNormalPoints = 10.0, kLargePoints = 16.0, kPresentingPoints = 20.0;
+    overlays_.lineScale = presenting_ ? 2.2 : on ? 1.8 : 1.0;
     QFont f = QApplication::font();
-    f.setPointSizeF(on ? 16.0 : 10.0);
+    f.setPointSizeF(presenting_ ? kPresentingPoints : on ? kLargePoints : kNormalPoints);
     QApplication::setFont(f);
     for (QWidget* w : findChildren<QWidget*>()) w->setFont(f);
     // The toolbars' labels stay small: on a projector the boxes they name must fit a row
@@ -910,7 +922,8 @@ void MainWindow::refresh() {
     }
     if (cacheTree_->isVisibleTo(this)) {
         FrameTask task("refresh-cache-tree");
-        cacheTree_->refresh(s);
+        const auto focus = s ? rc::RayFocus::of(*s, selection_) : std::nullopt;
+        cacheTree_->refresh(s, focus ? focus->node : -1);
     }
     if (eventLog_->isVisibleTo(this)) {
         FrameTask task("refresh-event-log");
@@ -1013,6 +1026,7 @@ bool MainWindow::apply(const GuiOptions& o, bool wait) {
     options_.cache = o.cache;
     options_.order = o.order;
     options_.accel = o.accel;
+    options_.band = o.band;
     options_.shading.sampling = o.sampling;
     options_.width = std::max(0, o.width);
     options_.height = std::max(0, o.height);

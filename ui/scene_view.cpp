@@ -440,6 +440,23 @@ void SceneView::paintEvent(QPaintEvent*) {
         p.setPen(pen(c, (s.focus ? 3.0 : 1.2) * lw, s.kind == rc::RayKind::Shadow ? Qt::DashLine : Qt::SolidLine));
         p.drawLine(toWidget(s.a), toWidget(s.b));
     }
+    // Lights (stars) and the eye
+    for (const rc::Vec3& l : k.lights) {
+        const QPointF c = toWidget(l);
+        // Small over a light's sphere, so the rays' ends in it show
+        const double arm = fan && !k.fan.lights.empty() && k.fan.lights.front().r > 0.0 ? 3.0 : 7.0;
+        p.setPen(pen(palette::kLight, 2.0 * lw));
+        for (int a = 0; a < 4; ++a) {
+            const double t = a * M_PI / 4;
+            const QPointF d(std::cos(t) * arm * lw, std::sin(t) * arm * lw);
+            p.drawLine(c - d, c + d);
+        }
+    }
+    const QPointF eye = toWidget(k.eye);
+    p.setPen(pen(Qt::white, 2.0 * lw));
+    p.setBrush(QColor(40, 40, 40));
+    p.drawEllipse(eye, 5 * lw, 5 * lw);
+    // The ray's axis after the eye, so that an eye ray seen end-on shows over the eye's mark
     if (k.focus) {
         // The ray's axis: a + where it starts (seen end-on in the view along the ray)
         const QPointF o = toWidget(k.focus->ray.o);
@@ -458,50 +475,9 @@ void SceneView::paintEvent(QPaintEvent*) {
             p.drawPolygon(QPolygonF({tip, tip + u + n, tip + u - n}));
         }
     }
-    // Lights (stars) and the eye
-    for (const rc::Vec3& l : k.lights) {
-        const QPointF c = toWidget(l);
-        // Small over a light's sphere, so the rays' ends in it show
-        const double arm = fan && !k.fan.lights.empty() && k.fan.lights.front().r > 0.0 ? 3.0 : 7.0;
-        p.setPen(pen(palette::kLight, 2.0 * lw));
-        for (int a = 0; a < 4; ++a) {
-            const double t = a * M_PI / 4;
-            const QPointF d(std::cos(t) * arm * lw, std::sin(t) * arm * lw);
-            p.drawLine(c - d, c + d);
-        }
-    }
-    const QPointF eye = toWidget(k.eye);
-    p.setPen(pen(Qt::white, 2.0 * lw));
-    p.setBrush(QColor(40, 40, 40));
-    p.drawEllipse(eye, 5 * lw, 5 * lw);
     // [scene-view-paint]
 
-    // Labels
     const QFontMetricsF fm(font());
-    auto label = [&](const QPointF& at, const QString& t, const QColor& c) {
-        QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
-        if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
-        if (r.left() < 4) r.moveLeft(4);
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(0, 0, 0, 150));
-        p.drawRoundedRect(r, 3, 3);
-        p.setPen(c);
-        p.drawText(r, Qt::AlignCenter, t);
-    };
-    label(eye, "eye", Qt::white);
-    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), palette::kLight);
-    if (k.hull.valid() && hullShown_) {
-        const rc::Sphere& a = k.hull.a;
-        label(toWidget(a.c) + QPointF(0, a.r * scale_ * 0.7), "origin", palette::kOrigin);
-        label(toWidget(k.hull.b.c) + QPointF(k.hull.b.r * scale_ * 0.5, -k.hull.b.r * scale_ * 0.7),
-              k.hull.targetObject >= 0 ? QString("target #%1").arg(k.hull.targetObject) : QString("target"), palette::kTarget);
-        for (int id : k.hull.blockers) {
-            if (id == k.hull.targetObject || (k.focus && id == k.focus->origin.object)) continue;  // labelled already
-            const rc::Sphere& b = k.bodies[std::size_t(id)].bound;
-            label(toWidget(b.c) + QPointF(b.r * scale_ * 0.7, b.r * scale_), QString("blocker #%1").arg(id), palette::kBlocker);
-        }
-    }
-
     // Caption: what is seen, with the sizes the paper's figures compare
     QStringList cap;
     const QString angleName = angle_ == SceneAngle::Side    ? "Side view, across the ray"
@@ -546,19 +522,79 @@ void SceneView::paintEvent(QPaintEvent*) {
     double cw = 0;
     for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
     cw = std::min(cw, std::max(40.0, width() - 32.0));
-    auto height = [&](const QString& c) {
+    auto textHeight = [&](const QString& c) {
         return fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
     };
     double total = 0;
-    for (const QString& c : cap) total += height(c);
+    for (const QString& c : cap) total += textHeight(c);
     const QRectF box(8, 8, cw + 16, total + 8);
+    // Labels: each in the view, clear of the caption and of the labels before it (moved a
+    // line down or up at a time until it is), so that none hides another
+    labelRects_.clear();
+    auto label = [&](const QPointF& at, const QString& t, const QColor& c) {
+        QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
+        if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
+        if (r.left() < 4) r.moveLeft(4);
+        // Above the view's own controls (the angle and whole-scene boxes at its foot)
+        const double floor = std::min({double(height()), double(angleBox_->geometry().top()), double(wholeBox_->geometry().top())}) - 4;
+        auto inView = [&](QRectF q) {
+            if (q.bottom() > floor) q.moveBottom(floor);
+            if (q.top() < 4) q.moveTop(4);
+            return q;
+        };
+        auto clashes = [&](const QRectF& q) {
+            if (q.intersects(box) || q.bottom() > floor) return true;
+            for (const QRectF& o : labelRects_)
+                if (o.intersects(q)) return true;
+            return false;
+        };
+        const double line = r.height() + 3;
+        QRectF at0 = inView(r);
+        for (int i = 0; i < 40 && clashes(at0); ++i) at0 = inView(r.translated(0, (i % 2 == 0 ? 1 : -1) * (i / 2 + 1) * line));
+        if (clashes(at0)) return;  // no room left: the caption names what it would have
+        r = at0;
+        labelRects_.push_back(r);
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(0, 0, 0, 150));
+        p.drawRoundedRect(r, 3, 3);
+        p.setPen(c);
+        p.drawText(r, Qt::AlignCenter, t);
+    };
+    label(eye, "eye", Qt::white);
+    // The paper's Figure 1: the ray, its cylinder of safety and the sphere it hits, named
+    if (k.focus && cylinderShown_) {
+        const int hit = k.focus->hit;
+        if (hit >= 0 && hit < int(k.bodies.size())) {
+            const rc::Sphere& b = k.bodies[std::size_t(hit)].bound;
+            label(toWidget(b.c) + QPointF(b.r * scale_ * 0.6, -b.r * scale_ * 0.6), QString("sphere hit #%1").arg(hit),
+                  palette::kTarget);
+        }
+        if (cyl.radius > 0.0)
+            label(toWidget(cyl.a) + QPointF(cyl.radius * scale_, cyl.radius * scale_ * 0.5), "cylinder of safety",
+                  palette::kCylinder);
+        label(toWidget(k.focus->ray.o) + QPointF(8 * lw, 8 * lw + fm.height()), "ray", palette::kRay);
+    }
+    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), palette::kLight);
+    if (k.hull.valid() && hullShown_) {
+        const rc::Sphere& a = k.hull.a;
+        label(toWidget(a.c) + QPointF(0, a.r * scale_ * 0.7), "origin", palette::kOrigin);
+        label(toWidget(k.hull.b.c) + QPointF(k.hull.b.r * scale_ * 0.5, -k.hull.b.r * scale_ * 0.7),
+              k.hull.targetObject >= 0 ? QString("target #%1").arg(k.hull.targetObject) : QString("target"), palette::kTarget);
+        for (int id : k.hull.blockers) {
+            if (id == k.hull.targetObject || (k.focus && id == k.focus->origin.object)) continue;  // labelled already
+            const rc::Sphere& b = k.bodies[std::size_t(id)].bound;
+            label(toWidget(b.c) + QPointF(b.r * scale_ * 0.7, b.r * scale_), QString("blocker #%1").arg(id), palette::kBlocker);
+        }
+    }
+
+    captionRect_ = box;
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
     p.drawRoundedRect(box, 6, 6);
     p.setPen(Qt::white);
     double y = 12;
     for (const QString& c : cap) {
-        const double h = height(c);
+        const double h = textHeight(c);
         p.drawText(QRectF(16, y, cw + 2, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, c);
         y += h;
     }

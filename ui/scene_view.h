@@ -86,6 +86,10 @@ public:
     double scale() const { return scale_; }
     /// The caption drawn at the top.
     const QString& caption() const { return caption_; }
+    /// Where the last paint put its labels and its caption box (widget coordinates): the
+    /// layout the back-row test reads.
+    const std::vector<QRectF>& labelRects() const { return labelRects_; }
+    const QRectF& captionRect() const { return captionRect_; }
 
     QSize sizeHint() const override { return {520, 520}; }
 
@@ -113,6 +117,8 @@ private:
     double scale_ = 1.0;
     QPointF centre_;  ///< world (x, y) at the middle of the drawing area
     QString caption_;
+    std::vector<QRectF> labelRects_;
+    QRectF captionRect_;
     QComboBox* angleBox_ = nullptr;
     QCheckBox* wholeBox_ = nullptr;
     QPointF lastPos_;

@@ -102,6 +102,15 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
     if (n.steppedAside)
         t += QString("<br><b>stepped aside</b> %1 rays searched at once: their paths' lookups mostly searched anyway")
                  .arg(n.steppedAside);
+    // The paper's measure of coherence, once the image is complete: the beam tree's size
+    if (s.done()) {
+        if (beamSerial_ != state->serial()) {
+            beams_ = state->beams().build();
+            beamSerial_ = state->serial();
+        }
+        t += QString("<br><b>beam tree</b> %1 beams; <b>coherence</b> %2 (average ray-tree size %3 / beam-tree size)")
+                 .arg(beams_.nodes).arg(beams_.coherence, 0, 'g', 3).arg(beams_.averageRayTreeSize, 0, 'f', 2);
+    }
     if (s.order().regions()) t += QString("<br><b>regions</b> %1, queue peak %2").arg(s.order().regions()).arg(s.order().queuePeak());
     // What this scene and these options leave out (no shadow rays without lights, ...)
     for (const std::string& line : rc::leftOut(s.scene(), &s.options()))

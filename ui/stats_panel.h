@@ -1,8 +1,12 @@
 #pragma once
 /// \file
 /// \brief Dock panel: live counters and a chart of hits, misses and tests over steps.
+#include <cstdint>
+
 #include <QElapsedTimer>
 #include <QWidget>
+
+#include "analysis/beam_tree.h"
 
 class QLabel;
 class QLineSeries;
@@ -43,6 +47,9 @@ private:
     QElapsedTimer chartClock_;  ///< since the chart was last updated
     bool chartDue_ = false;     ///< a chartDue() is on its way
     bool throttled_ = false;
+    /// The beam tree of the last complete render shown, built once per render (its serial)
+    std::uint64_t beamSerial_ = 0;
+    rc::BeamTreeStats beams_;
     QLabel* text_;
     QChart* chart_;
     QLineSeries *hits_, *misses_, *tests_, *otherTests_;

@@ -1,11 +1,17 @@
 #include "view/tour.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+
+#include "scene/builtin_scenes.h"
+#include "view/claim.h"
+#include "view/overlay_layers.h"
+#include "view/session_state.h"
 
 namespace rc {
 
@@ -21,7 +27,7 @@ std::string TourStop::value(const std::string& key, const std::string& otherwise
 
 const std::vector<std::string>& tourSettingNames() {
     static const std::vector<std::string> names = {
-        "scene", "cache", "order", "accel", "width", "height", "steps", "select", "overlays", "heatmap",
+        "scene", "cache", "order", "accel", "band", "width", "height", "steps", "select", "overlays", "heatmap",
         "scene-view", "orbit", "zoom", "focus", "compare", "miss-reason", "spp", "light-radius",
         "shadow-samples", "gloss", "gloss-samples", "seed", "panels", "run"};
     return names;
@@ -117,8 +123,12 @@ public:
             where_ = Where::Top;
             return true;
         }
-        // An array of strings: one setting, its items joined with commas
+        // An array of strings: one setting, its items joined with commas; or the claims
         where_ = Where::Stop;
+        if (key_ == "claims") {
+            out_.stops.back().claims = list_;
+            return true;
+        }
         std::string joined;
         for (const std::string& item : list_) joined += (joined.empty() ? "" : ",") + item;
         out_.stops.back().settings.push_back({key_, joined, keyLine_, keyColumn_});
@@ -135,8 +145,12 @@ public:
                 failAt(keyLine_, keyColumn_, "a tour holds 'title', 'description' and 'stops', not '" + k + "'");
         } else if (where_ == Where::Stop) {
             const auto& names = tourSettingNames();
-            if (!isText(k) && std::find(names.begin(), names.end(), k) == names.end())
-                failAt(keyLine_, keyColumn_, "unknown stop setting '" + k + "' (a stop holds title, caption, page and " + joinedNames() + ")");
+            if (k == "claims") {
+                out_.stops.back().claimsLine = keyLine_;
+                out_.stops.back().claimsColumn = keyColumn_;
+            } else if (!isText(k) && std::find(names.begin(), names.end(), k) == names.end()) {
+                failAt(keyLine_, keyColumn_, "unknown stop setting '" + k + "' (a stop holds title, caption, page, claims and " + joinedNames() + ")");
+            }
             for (const TourSetting& s : out_.stops.back().settings)
                 if (s.key == k) failAt(keyLine_, keyColumn_, "stop " + std::to_string(out_.stops.size()) + " sets '" + k + "' twice");
         }
@@ -164,7 +178,10 @@ private:
                 return true;
             case Where::Stop: {
                 TourStop& s = out_.stops.back();
-                if (isText(key_)) {
+                if (key_ == "claims") {
+                    if (!isString || v.empty()) fail("a stop's 'claims' must be a string or an array of strings");
+                    s.claims.push_back(v);
+                } else if (isText(key_)) {
                     if (!isString || v.empty()) fail("a stop's '" + key_ + "' must be a non-empty string");
                     (key_ == "title" ? s.title : key_ == "caption" ? s.caption : s.page) = v;
                 } else if (!isBool) {
@@ -237,6 +254,118 @@ Tour loadTour(const std::string& path) {
     std::ostringstream text;
     text << in.rdbuf();
     return parseTour(text.str(), path);
+}
+
+}  // namespace rc
+
+namespace rc {
+
+std::string stopScene(const Tour& tour, const TourStop& stop) {
+    const std::string spec = stop.value("scene");
+    const std::filesystem::path given(spec);
+    if (given.is_absolute()) return spec;
+    const std::filesystem::path beside = std::filesystem::path(tour.file).parent_path() / given;
+    std::error_code ec;
+    // A file beside the tour; failing that, one ending in .nff is still meant to be beside it
+    if (std::filesystem::is_regular_file(beside, ec) || given.extension() == ".nff") return beside.lexically_normal().string();
+    return spec;
+}
+
+namespace {
+
+/// A whole number setting of `stop`, or `otherwise`.
+int intValue(const TourStop& stop, const std::string& key, int otherwise) {
+    const std::string v = stop.value(key);
+    if (v.empty()) return otherwise;
+    try {
+        return std::stoi(v);
+    } catch (const std::exception&) {
+        return otherwise;
+    }
+}
+
+/// Comma-separated whole numbers.
+std::vector<int> numbersOf(const std::string& s, char sep = ',') {
+    std::vector<int> out;
+    std::stringstream in(s);
+    std::string item;
+    while (std::getline(in, item, sep)) {
+        try {
+            out.push_back(std::stoi(item));
+        } catch (const std::exception&) {
+            return {};
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void checkStop(const Tour& tour, int k) {
+    const TourStop& st = tour.stops.at(std::size_t(k - 1));
+    const std::string which = "stop " + std::to_string(k) + " (" + st.title + "): ";
+    auto failAt = [&](const std::string& key, const std::string& why) {
+        int line = st.line, column = st.column;
+        for (const TourSetting& s : st.settings)
+            if (s.key == key) line = s.line, column = s.column;
+        if (key == "claims" && st.claimsLine > 0) line = st.claimsLine, column = st.claimsColumn;
+        throw TourError(tour.file, line, column, which + key + ": " + why);
+    };
+    // The scene opens
+    std::shared_ptr<const Scene> scene;
+    try {
+        scene = std::make_shared<const Scene>(loadScene(stopScene(tour, st)));
+    } catch (const std::exception& e) {
+        failAt("scene", e.what());
+    }
+    // The image's size, as the viewer takes it: the stop's, else the scene's own
+    const int w = intValue(st, "width", scene->camera.width);
+    const int h = intValue(st, "height", scene->camera.height);
+    // The focus rectangle and the selected pixel lie in the image
+    if (const std::string f = st.value("focus"); !f.empty()) {
+        const std::vector<int> r = numbersOf(f);
+        if (r.size() != 4 || r[0] < 0 || r[1] < 0 || r[2] > w || r[3] > h || r[0] >= r[2] || r[1] >= r[3])
+            failAt("focus", "'" + f + "' is not a rectangle x0,y0,x1,y1 inside the " + std::to_string(w) + "x" +
+                                std::to_string(h) + " image");
+    }
+    const std::string sel = st.value("select");
+    if (!sel.empty()) {
+        const auto colon = sel.find(':');
+        const std::vector<int> xy = numbersOf(sel.substr(0, colon));
+        if (xy.size() != 2 || xy[0] < 0 || xy[1] < 0 || xy[0] >= w || xy[1] >= h)
+            failAt("select", "pixel '" + sel.substr(0, colon) + "' lies outside the " + std::to_string(w) + "x" +
+                                 std::to_string(h) + " image");
+        // The path is a ray of that pixel: its scanline traced as the stop traces it
+        if (colon != std::string::npos) {
+            RenderOptions ro;
+            ro.width = w;
+            ro.height = h;
+            ro.rowBegin = xy[1];
+            ro.rowEnd = xy[1] + 1;
+            ro.shading.sampling.spp = intValue(st, "spp", 1);
+            ro.shading.sampling.shadowSamples = intValue(st, "shadow-samples", ro.shading.sampling.shadowSamples);
+            ro.shading.sampling.glossSamples = intValue(st, "gloss-samples", ro.shading.sampling.glossSamples);
+            if (const std::string r = st.value("light-radius"); !r.empty()) ro.shading.sampling.lightRadius = std::atof(r.c_str());
+            if (const std::string g = st.value("gloss"); !g.empty()) ro.shading.sampling.glossDegrees = std::atof(g.c_str());
+            try {
+                SessionState s({scene, ro});
+                s.runUntil(RunGoal::ToEnd, 0);
+                std::string why;
+                if (eventAtPath(s, xy[1] * w + xy[0], sel.substr(colon + 1), why) < 0) failAt("select", why);
+            } catch (const TourError&) {
+                throw;
+            } catch (const std::exception& e) {
+                failAt("select", e.what());
+            }
+        }
+    }
+    // The claims read quantities the stop draws
+    std::vector<Claim> claims;
+    if (const std::string why = parseStopClaims(st, claims); !why.empty()) failAt("claims", why);
+}
+
+void checkTour(const Tour& tour) {
+    for (int k = 1; k <= int(tour.stops.size()); ++k) checkStop(tour, k);
 }
 
 }  // namespace rc

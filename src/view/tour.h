@@ -22,6 +22,11 @@ struct TourStop {
     std::string caption;  ///< one to three sentences; the paper's words in quotation marks
     std::string page;     ///< the docs page it illustrates (its label, e.g. safety_cylinder); may be empty
     std::vector<TourSetting> settings;
+    /// What the stop's picture must show, each a comparison of quantities read from what
+    /// it draws (view/claim.h), e.g. "right.misses < left.misses"; checked by the tests
+    /// and, when the tour is opened, for names the stop does not draw.
+    std::vector<std::string> claims;
+    int claimsLine = 0, claimsColumn = 0;  ///< where its 'claims' key stands
     int line = 0, column = 0;  ///< where the stop's object opens
     /// The value of setting `key`, or `otherwise` when the stop does not set it.
     std::string value(const std::string& key, const std::string& otherwise = {}) const;
@@ -43,7 +48,7 @@ public:
 };
 
 /// The settings a stop may hold: the viewer's options that make sense in a tour. Every
-/// other key of a stop but `title`, `caption` and `page` is an error.
+/// other key of a stop but `title`, `caption`, `page` and `claims` is an error.
 const std::vector<std::string>& tourSettingNames();
 
 /// Parses a tour from JSON text: a top-level object with an optional `title` and a
@@ -53,5 +58,16 @@ const std::vector<std::string>& tourSettingNames();
 Tour parseTour(const std::string& text, const std::string& file);
 /// Reads and parses a tour file. \throws TourError (line 0 when it cannot be read).
 Tour loadTour(const std::string& path);
+
+/// The scene `stop` opens: its `scene` setting, with a relative file path resolved against
+/// the folder of the tour file (a built-in name such as `cube:4` stays as it is).
+std::string stopScene(const Tour& tour, const TourStop& stop);
+/// Checks what parsing cannot see of stop `stop` (from 1): its scene opens; its `select`
+/// pixel and `focus` rectangle lie in its image; the selected path is a ray of that pixel
+/// (its scanline traced to find out); its claims name quantities it draws (view/claim.h).
+/// \throws TourError at the field, "stop K (title): field: why".
+void checkStop(const Tour& tour, int stop);
+/// checkStop() of every stop, in order: a tour is checked whole when it is opened.
+void checkTour(const Tour& tour);
 
 }  // namespace rc
