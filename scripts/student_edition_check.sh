@@ -15,9 +15,13 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 main="${1:-$root/build/src/raycache}"
 work="${2:-$(mktemp -d)}"
+[ -x "$main" ] || { echo "student edition: no main build at $main" >&2; exit 2; }
+# Both may be given relative to where the script was called from; it changes folder below
+main="$(realpath "$main")"
+mkdir -p "$work"
+work="$(cd "$work" && pwd)"
 edition="$work/edition"
 jobs=$(nproc)
-[ -x "$main" ] || { echo "student edition: no main build at $main" >&2; exit 2; }
 rm -rf "$edition"
 "$root/scripts/student_edition.sh" "$edition"
 python3 "$root/scripts/student_edition.py" leaks "$edition"

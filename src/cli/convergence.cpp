@@ -35,15 +35,10 @@ struct ConvergenceArgs {
     RenderFlags flags;
 };
 
-// The registered caches that the sweeps take (search/cache_registry.h: inSweeps)
-// (read when first asked, after every registrar has run)
+// The registered caches that the sweeps take (search/cache_registry.h), read when first
+// asked, after every registrar has run
 const std::vector<CacheKind>& sweptCaches() {
-    static const std::vector<CacheKind> swept = [] {
-        std::vector<CacheKind> out;
-        for (CacheKind c : allCacheKinds())
-            if (cacheInfo(c).inSweeps) out.push_back(c);
-        return out;
-    }();
+    static const std::vector<CacheKind> swept = sweptCacheKinds();
     return swept;
 }
 const OrderKind kOrders[] = {OrderKind::Scanline, OrderKind::Progressive, OrderKind::BreadthFirst};

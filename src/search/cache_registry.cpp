@@ -60,4 +60,11 @@ CacheKind registerCache(CacheInfo info) {
 
 const CacheInfo& cacheInfo(CacheKind kind) { return registry()[std::size_t(kind)]; }
 
+std::vector<CacheKind> sweptCacheKinds() {
+    std::vector<CacheKind> out;
+    for (CacheKind c : allCacheKinds())
+        if (cacheInfo(c).inSweeps) out.push_back(c);
+    return out;
+}
+
 }  // namespace rc

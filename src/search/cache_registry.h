@@ -52,4 +52,8 @@ struct CacheRegistrar {
 /// The registry's entry of `kind`. \throws std::out_of_range for a kind never registered.
 const CacheInfo& cacheInfo(CacheKind kind);
 
+/// The caches `coherence` and `convergence` sweep (CacheInfo::inSweeps), in registry order.
+/// Ask after the program has started (every registrar has run by then).
+std::vector<CacheKind> sweptCacheKinds();
+
 }  // namespace rc

@@ -19,23 +19,10 @@
 
 using namespace rcgui;
 using rcgui::testing::showAt;
+using rcgui::testing::shippedTour;
+using rcgui::testing::stopOptionsOf;
 
 namespace {
-
-rc::Tour shippedTour(const QString& name) {
-    return rc::loadTour(QDir(RAYCACHE_SCENES_DIR "/../tours").filePath(name).toStdString());
-}
-
-std::vector<GuiOptions> optionsOf(const rc::Tour& tour) {
-    std::vector<GuiOptions> stops;
-    for (int k = 1; k <= int(tour.stops.size()); ++k) {
-        QString why;
-        const auto o = stopOptions(tour, k, GuiOptions{}, why);
-        REQUIRE(o);
-        stops.push_back(*o);
-    }
-    return stops;
-}
 
 }  // namespace
 
@@ -47,7 +34,7 @@ TEST_CASE("At 1280x720 with large fonts no label of the scene view covers anothe
         MainWindow w;
         w.setLargeFonts(true);
         showAt(w, 1280, 720);
-        w.setTour(tour, optionsOf(tour));
+        w.setTour(tour, stopOptionsOf(tour));
         for (int k = 1; k <= int(tour.stops.size()); ++k) {
             REQUIRE(w.goToStop(k, true));
             QApplication::processEvents();
@@ -78,7 +65,7 @@ TEST_CASE("Stop 7 shows the cache tree's entries and a flush: state and object i
     MainWindow w;
     w.setLargeFonts(true);
     showAt(w, 1280, 720);
-    w.setTour(tour, optionsOf(tour));
+    w.setTour(tour, stopOptionsOf(tour));
     REQUIRE(w.goToStop(7, true));
     QApplication::processEvents();
     auto* panel = w.findChild<CacheTreePanel*>();
@@ -110,7 +97,7 @@ TEST_CASE("Presenting enlarges the text beyond large fonts and keeps a stop's pa
     w.setLargeFonts(true);
     showAt(w, 1280, 720);
     const double large = w.imageView()->font().pointSizeF();
-    w.setTour(tour, optionsOf(tour));
+    w.setTour(tour, stopOptionsOf(tour));
     w.setPresentation(true);
     REQUIRE(w.imageView()->font().pointSizeF() > large);
     REQUIRE(w.findChild<QLabel*>("tourCaption")->font().pointSizeF() > large);  // the caption a hall reads

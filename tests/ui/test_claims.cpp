@@ -17,26 +17,11 @@
 
 using namespace rcgui;
 using rcgui::testing::showAt;
+using rcgui::testing::shippedTour;
+using rcgui::testing::stopOptionsOf;
+using rcgui::testing::toursFolder;
 
 namespace {
-
-QString toursFolder() { return QDir(RAYCACHE_SCENES_DIR "/../tours").absolutePath(); }
-
-rc::Tour shippedTour(const QString& name) {
-    return rc::loadTour(QDir(toursFolder()).filePath(name).toStdString());
-}
-
-std::vector<GuiOptions> optionsOf(const rc::Tour& tour) {
-    std::vector<GuiOptions> stops;
-    for (int k = 1; k <= int(tour.stops.size()); ++k) {
-        QString why;
-        const auto o = stopOptions(tour, k, GuiOptions{}, why);
-        INFO(why.toStdString());
-        REQUIRE(o);
-        stops.push_back(*o);
-    }
-    return stops;
-}
 
 /// What stop `k` of the window's tour draws, as the claims read it: its panes and the
 /// selection they share.
@@ -72,7 +57,7 @@ TEST_CASE("Every claim of the shipped tours holds in the window, and every capti
         const rc::Tour tour = shippedTour(file);
         MainWindow w;
         showAt(w, 1280, 720);
-        w.setTour(tour, optionsOf(tour));
+        w.setTour(tour, stopOptionsOf(tour));
         for (int k = 1; k <= int(tour.stops.size()); ++k) {
             std::vector<std::string> slips;
             for (const rc::ClaimResult& r : claimsAt(w, tour, k, &slips)) {
@@ -99,11 +84,11 @@ TEST_CASE("A wrong claim fails: stop 8 of the paper's tour with its panes swappe
     REQUIRE(stop.claims.front() == "right.misses < left.misses");
     MainWindow w;
     showAt(w, 1280, 720);
-    w.setTour(tour, optionsOf(tour));
+    w.setTour(tour, stopOptionsOf(tour));
     const auto right = claimsAt(w, tour, 8);
     REQUIRE(right.front().holds);
     stop.claims.front() = "left.misses < right.misses";
-    w.setTour(tour, optionsOf(tour));
+    w.setTour(tour, stopOptionsOf(tour));
     const auto swapped = claimsAt(w, tour, 8);
     INFO(swapped.front().reading);
     REQUIRE_FALSE(swapped.front().holds);
@@ -121,7 +106,7 @@ TEST_CASE("A caption that names a pane, path or count its stop does not draw is 
                                         "t.json");
     MainWindow w;
     showAt(w, 1280, 720);
-    w.setTour(tour, optionsOf(tour));
+    w.setTour(tour, stopOptionsOf(tour));
     std::vector<std::string> slips;
     claimsAt(w, tour, 1, &slips);
     REQUIRE(slips.size() == 3);

@@ -32,23 +32,10 @@
 using namespace rcgui;
 using rcgui::testing::showAt;
 using rcgui::testing::stateOf;
+using rcgui::testing::stopOptionsOf;
+using rcgui::testing::toursFolder;
 
 namespace {
-
-QString toursFolder() { return QDir(RAYCACHE_SCENES_DIR "/../tours").absolutePath(); }
-
-/// The options of every stop of `file`, read as raycache-gui reads them (the test fails on an error).
-std::vector<GuiOptions> stopsOf(const rc::Tour& tour) {
-    std::vector<GuiOptions> stops;
-    for (int k = 1; k <= int(tour.stops.size()); ++k) {
-        QString why;
-        const auto o = stopOptions(tour, k, GuiOptions{}, why);
-        INFO(why.toStdString());
-        REQUIRE(o);
-        stops.push_back(*o);
-    }
-    return stops;
-}
 
 /// A render of the built-in `pair` with blocker lists, `size` pixels square.
 rc::SessionState pairState(rc::OrderKind order, int size) {
@@ -74,7 +61,7 @@ TEST_CASE("Every stop of the shipped tours reads as the window's options", "[gui
     REQUIRE(files.contains("debugging.json"));
     for (const QString& file : files) {
         const rc::Tour tour = rc::loadTour(QDir(toursFolder()).filePath(file).toStdString());
-        const std::vector<GuiOptions> stops = stopsOf(tour);
+        const std::vector<GuiOptions> stops = stopOptionsOf(tour);
         INFO(file.toStdString());
         REQUIRE(stops.size() == tour.stops.size());
         for (std::size_t i = 0; i < stops.size(); ++i) {
@@ -112,7 +99,7 @@ TEST_CASE("PageDown and PageUp move between stops, R brings a stop back as writt
                                         "two.json");
     MainWindow w;
     showAt(w, 1280, 720);
-    w.setTour(tour, stopsOf(tour));
+    w.setTour(tour, stopOptionsOf(tour));
     REQUIRE(w.goToStop(1, true));
     REQUIRE(w.stop() == 1);
     REQUIRE(stateOf(w).session().steps() == 300);

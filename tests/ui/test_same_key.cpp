@@ -23,10 +23,9 @@
 
 using namespace rcgui;
 using rcgui::testing::showAt;
+using rcgui::testing::toursFolder;
 
 namespace {
-
-QString toursFolder() { return QDir(RAYCACHE_SCENES_DIR "/../tours").absolutePath(); }
 
 bool hasKey(const std::vector<rc::LegendEntry>& keys, const std::string& prefix) {
     return std::any_of(keys.begin(), keys.end(), [&](const rc::LegendEntry& e) { return e.text.rfind(prefix, 0) == 0; });
@@ -39,14 +38,7 @@ TEST_CASE("At every tour stop the window's key names the shapes it drew", "[gui]
     int withShapes = 0;
     for (const char* name : {"hanrahan86", "debugging"}) {
         const rc::Tour tour = rc::loadTour(QDir(toursFolder()).filePath(QString(name) + ".json").toStdString());
-        std::vector<GuiOptions> stops;
-        for (int k = 1; k <= int(tour.stops.size()); ++k) {
-            QString why;
-            const auto o = stopOptions(tour, k, GuiOptions{}, why);
-            INFO(why.toStdString());
-            REQUIRE(o);
-            stops.push_back(*o);
-        }
+        const std::vector<GuiOptions> stops = rcgui::testing::stopOptionsOf(tour);
         for (int k = 1; k <= int(tour.stops.size()); ++k) {
             INFO(name << " stop " << k);
             MainWindow w;

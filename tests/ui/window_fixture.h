@@ -2,10 +2,15 @@
 // What the GUI tests' fixtures share: showing a window and reaching its session.
 #include <catch2/catch.hpp>
 
-#include <QApplication>
+#include <vector>
 
+#include <QApplication>
+#include <QDir>
+
+#include "gui_options.h"
 #include "main_window.h"
 #include "view/session_state.h"
+#include "view/tour.h"
 
 namespace rcgui::testing {
 
@@ -21,6 +26,28 @@ inline rc::SessionState& stateOf(MainWindow& w) {
     rc::SessionState* s = w.controller().state();
     REQUIRE(s != nullptr);
     return *s;
+}
+
+/// The folder of the shipped tours.
+inline QString toursFolder() { return QDir(RAYCACHE_SCENES_DIR "/../tours").absolutePath(); }
+
+/// A shipped tour, e.g. shippedTour("hanrahan86.json").
+inline rc::Tour shippedTour(const QString& file) {
+    return rc::loadTour(QDir(toursFolder()).filePath(file).toStdString());
+}
+
+/// The options of every stop of `tour`, read as raycache-gui reads them (the test fails on
+/// an error, and says which).
+inline std::vector<GuiOptions> stopOptionsOf(const rc::Tour& tour) {
+    std::vector<GuiOptions> stops;
+    for (int k = 1; k <= int(tour.stops.size()); ++k) {
+        QString why;
+        const auto o = stopOptions(tour, k, GuiOptions{}, why);
+        INFO("stop " << k << ": " << why.toStdString());
+        REQUIRE(o);
+        stops.push_back(*o);
+    }
+    return stops;
 }
 
 }  // namespace rcgui::testing
