@@ -19,6 +19,7 @@
 #include "scene/builtin_scenes.h"
 #include "search/blocker_lists.h"
 #include "search/linear_search.h"
+#include "oracle_minimum.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -35,19 +36,7 @@ long double hullGap(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b)
         }
         return std::sqrt(d2) - ((long double)a.r + u * ((long double)b.r - (long double)a.r));
     };
-    const long double phi = (std::sqrt(5.0L) - 1.0L) / 2.0L;
-    long double lo = 0.0L, hi = 1.0L, x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
-    long double f1 = f(x1), f2 = f(x2);
-    for (int i = 0; i < 90; ++i) {
-        if (f1 <= f2) {
-            hi = x2, x2 = x1, f2 = f1;
-            x1 = hi - phi * (hi - lo), f1 = f(x1);
-        } else {
-            lo = x1, x1 = x2, f1 = f2;
-            x2 = lo + phi * (hi - lo), f2 = f(x2);
-        }
-    }
-    return std::min({f(0.0L), f(1.0L), f1, f2});
+    return tutorial::minimumOnUnit(f);
 }
 
 // Your hull's distance
