@@ -7,7 +7,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ pkg-config dpkg-dev
+  cmake ninja-build g++ pkg-config dpkg-dev ccache
   libglm-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev libssl-dev
   qt6-base-dev qt6-charts-dev libqt6opengl6-dev libgl-dev
   doxygen graphviz doxygen-awesome-css libjs-mathjax

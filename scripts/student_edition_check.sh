@@ -28,6 +28,9 @@ python3 "$root/scripts/student_edition.py" leaks "$edition"
 
 launcher=()
 if command -v ccache >/dev/null; then
+  # Paths relative to the project's root: the edition's objects that equal the main build's
+  # (scripts/test.sh builds it with ccache too) come from the cache
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
 cd "$edition"

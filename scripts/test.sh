@@ -12,7 +12,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --with-web --with-browser
 jobs=$(nproc)
-cmake --preset default >/dev/null
+# A compiler cache lets the student edition's build below reuse the main build's objects
+# (their paths are taken relative to this folder)
+launcher=()
+if command -v ccache >/dev/null; then
+  export CCACHE_BASEDIR="$PWD"
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+cmake --preset default "${launcher[@]}" >/dev/null
 cmake --build --preset default -j "$jobs"
 if cmake --build --preset default --target help | grep '^docs:' >/dev/null; then  # not -q: an early exit would break cmake's pipe, and pipefail would skip the docs
   cmake --build --preset default --target docs
