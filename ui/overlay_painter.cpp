@@ -186,15 +186,6 @@ void OverlayPainter::paintSamples(QPainter& p, const rc::SessionState& s, const 
     }
     // Every ray but the eye samples is a segment, clipped to the near plane and the view:
     // one list per colour
-    auto colourOf = [](rc::FanOutcome o) {
-        switch (o) {
-            case rc::FanOutcome::Hit: return palette::kSampleRay;
-            case rc::FanOutcome::Missed: return palette::kSampleMissed;
-            case rc::FanOutcome::Lit: return palette::kShadowLit;
-            case rc::FanOutcome::Blocked: return palette::kShadowBlocked;
-        }
-        return palette::kSampleRay;
-    };
     // Segments are cut to the view itself (a few widget pixels over): the outlines' margin
     // of a pixel is thousands of widget pixels at a high zoom, and a stroke costs its length
     const QRectF visible = p.transform().inverted().mapRect(QRectF(p.viewport()));
@@ -242,7 +233,7 @@ void OverlayPainter::paintSamples(QPainter& p, const rc::SessionState& s, const 
             for (const QLineF& one : l) p.drawLine(one);  // one short path each
     }
     for (int k = 0; k < 4; ++k) {
-        p.setPen(cosmetic(colourOf(rc::FanOutcome(k)), width));
+        p.setPen(cosmetic(palette::fanOutcome(rc::FanOutcome(k)), width));
         if (hairlines) p.drawLines(lines[k]);
         else
             for (const QLineF& one : lines[k]) p.drawLine(one);
@@ -405,6 +396,15 @@ OverlayPainter::LegendText OverlayPainter::legendText(const rc::SessionState& s,
     // The miss in focus's cause and the selected pixel (rc::focusEntries)
     addKeys(rc::focusEntries(s, sel, shown, drawn_));
     t.info << extraCaption_;
+    // The beam-tree heatmap: the paper's measure of coherence beside it, once the image is complete
+    if (heatmap_ == Heatmap::BeamNode && s.session().done()) {
+        if (beamSerial_ != s.serial()) {
+            beams_ = s.beams().build();
+            beamSerial_ = s.serial();
+        }
+        t.info << QString("beam tree %L1 beams; coherence %2 = average ray-tree size %3 / beam-tree size")
+                      .arg(beams_.nodes).arg(beams_.coherence, 0, 'g', 3).arg(beams_.averageRayTreeSize, 0, 'f', 2);
+    }
     if (const auto& last = s.recorder().lastEvent(); (sel.pixel >= 0 || sel.event >= 0) && last && !s.session().done())
         t.keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
     if (!o.legend || !keysShown_) t.keys.clear();

@@ -8,6 +8,7 @@
 #include <QPainter>
 #include <QStringList>
 
+#include "analysis/beam_tree.h"
 #include "legend_layout.h"
 #include "overlay_options.h"
 #include "view/legend.h"
@@ -120,6 +121,8 @@ private:
     double lineScale_ = 1.0;
     double minBeside_ = 0.0;  ///< see legendMinBeside()
     LegendLayout layout_;
+    std::uint64_t beamSerial_ = 0;  ///< the state beams_ was built from (its serial)
+    rc::BeamTreeStats beams_;       ///< the beam tree's size and coherence, for the info box
     QFont legendFont_;
     std::size_t eventBudget_ = 0;
     std::function<void()> more_;
