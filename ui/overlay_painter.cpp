@@ -186,15 +186,6 @@ void OverlayPainter::paintSamples(QPainter& p, const rc::SessionState& s, const 
     }
     // Every ray but the eye samples is a segment, clipped to the near plane and the view:
     // one list per colour
-    auto colourOf = [](rc::FanOutcome o) {
-        switch (o) {
-            case rc::FanOutcome::Hit: return palette::kSampleRay;
-            case rc::FanOutcome::Missed: return palette::kSampleMissed;
-            case rc::FanOutcome::Lit: return palette::kShadowLit;
-            case rc::FanOutcome::Blocked: return palette::kShadowBlocked;
-        }
-        return palette::kSampleRay;
-    };
     // Segments are cut to the view itself (a few widget pixels over): the outlines' margin
     // of a pixel is thousands of widget pixels at a high zoom, and a stroke costs its length
     const QRectF visible = p.transform().inverted().mapRect(QRectF(p.viewport()));
@@ -242,7 +233,7 @@ void OverlayPainter::paintSamples(QPainter& p, const rc::SessionState& s, const 
             for (const QLineF& one : l) p.drawLine(one);  // one short path each
     }
     for (int k = 0; k < 4; ++k) {
-        p.setPen(cosmetic(colourOf(rc::FanOutcome(k)), width));
+        p.setPen(cosmetic(palette::fanOutcome(rc::FanOutcome(k)), width));
         if (hairlines) p.drawLines(lines[k]);
         else
             for (const QLineF& one : lines[k]) p.drawLine(one);
@@ -330,209 +321,234 @@ void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double 
     p.restore();
 }
 
-void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
-                                 const QRectF& area, const QRectF& image) {
+namespace {
+
+/// Swatch and the gap after it, in line heights: a key's text starts this far in.
+constexpr double kSwatchLines = 1.3;
+/// Padding inside a box: left and right, top and bottom (widget pixels).
+constexpr double kPadX = 8.0, kPadY = 4.0;
+/// The font scales tried, largest first, until the boxes fit their column: no smaller
+/// than four fifths of the view's font (large fonts stay larger than normal ones).
+constexpr std::array<double, 3> kFontScalesToFit{1.0, 0.9, 0.8};
+/// A colour bar's strip, in line heights, and the lines under it for its values.
+constexpr double kBarStripLines = 0.8, kBarValueLines = 1.0;
+
+/// The sample rays of the pixel in focus, as key lines.
+void appendSampleKeys(std::vector<std::pair<QColor, QString>>& keys, const rc::SessionState& s, const rc::RayFocus& focus) {
+    const rc::SampleFan& fan = s.fan(focus.pixel);
+    const int eye = fan.count(rc::RayKind::Primary), shadow = fan.count(rc::RayKind::Shadow);
+    const int other = int(fan.rays.size()) - eye - shadow;
+    keys.push_back({Qt::transparent, QString("sample rays of pixel (%1,%2)%3:")
+                                         .arg(focus.pixel % s.width()).arg(focus.pixel / s.width())
+                                         .arg(fan.cut ? QString(", the first %1").arg(fan.rays.size()) : QString())});
+    keys.push_back({palette::kSampleRay, QString("%1 eye sample%2 (dots), %3 reflection/refraction ray%4: hit")
+                                             .arg(eye).arg(eye == 1 ? "" : "s").arg(other).arg(other == 1 ? "" : "s")});
+    keys.push_back({palette::kSampleMissed, QString("hit nothing (%1)").arg(fan.count(rc::FanOutcome::Missed))});
+    keys.push_back({palette::kShadowLit, QString("shadow rays reaching the light (%1 of %2)")
+                                             .arg(fan.count(rc::FanOutcome::Lit)).arg(shadow)});
+    keys.push_back({palette::kShadowBlocked, QString("shadow rays blocked (%1 of %2)")
+                                                 .arg(fan.count(rc::FanOutcome::Blocked)).arg(shadow)});
+    double radius = 0.0;
+    for (const rc::Sphere& l : fan.lights) radius = std::max(radius, l.r);
+    if (radius > 0.0)
+        keys.push_back({palette::kLight, QString("light's sphere (r %1), %2 points a hit").arg(radius, 0, 'g', 3).arg(fan.shadowSamples)});
+    if (fan.notCast > 0)
+        keys.push_back({Qt::transparent, QString("no ray to %1 light points (behind the surface)").arg(fan.notCast)});
+}
+
+/// The height of `text` wrapped to `width`, at least one line.
+double wrappedHeight(const QFontMetricsF& fm, const QString& text, double width) {
+    return std::max(fm.height(), fm.boundingRect(QRectF(0, 0, std::max(1.0, width), 1e6), Qt::TextWordWrap, text).height());
+}
+
+/// A box of lines, each indented by `indent`, measured in `fm`.
+LegendBlock linesBlock(const QFontMetricsF& fm, const QStringList& lines, double indent) {
+    LegendBlock b;
+    if (lines.isEmpty()) return b;
+    for (const QString& l : lines) b.naturalWidth = std::max(b.naturalWidth, fm.horizontalAdvance(l) + indent + 2 * kPadX + 2);
+    b.minWidth = indent + 2 * kPadX + fm.horizontalAdvance("MMMMMM");
+    b.height = [fm, lines, indent](double width) {
+        double h = 2 * kPadY;
+        for (const QString& l : lines) h += wrappedHeight(fm, l, width - indent - 2 * kPadX);
+        return h;
+    };
+    return b;
+}
+
+}  // namespace
+
+OverlayPainter::LegendText OverlayPainter::legendText(const rc::SessionState& s, const Overlays& o,
+                                                      const rc::Selection& sel) {
     // The caption: scene, cache and order, size, step; then the ray in focus
-    QStringList caption;
-    std::vector<std::pair<QColor, QString>> keys;
-    const rc::RenderSession& session = s.session();
-    for (const std::string& line : rc::focusCaption(s, sel)) caption << QString::fromStdString(line);
+    LegendText t;
+    for (const std::string& line : rc::focusCaption(s, sel)) t.info << QString::fromStdString(line);
     const auto focus = rc::RayFocus::of(s, sel);
     // The key: the core's entries (rc::legendEntries, as the page's), for the shapes drawn
     const rc::LegendShown shown{o.cylinder, o.hull, o.frontier, o.misses};
     coreKeys_.clear();
-    const auto addKeys = [&keys, this](const std::vector<rc::LegendEntry>& entries) {
+    const auto addKeys = [&t, this](const std::vector<rc::LegendEntry>& entries) {
         for (const rc::LegendEntry& e : entries)
-            keys.push_back({e.colour ? palette::qt(*e.colour) : QColor(Qt::transparent), QString::fromStdString(e.text)});
+            t.keys.push_back({e.colour ? palette::qt(*e.colour) : QColor(Qt::transparent), QString::fromStdString(e.text)});
         coreKeys_.insert(coreKeys_.end(), entries.begin(), entries.end());
     };
     addKeys(rc::legendEntries(s, sel, shown, drawn_));
-    // The sample rays of the pixel in focus
-    if (o.samples && focus) {
-        const rc::SampleFan& fan = s.fan(focus->pixel);
-        const int eye = fan.count(rc::RayKind::Primary), shadow = fan.count(rc::RayKind::Shadow);
-        const int other = int(fan.rays.size()) - eye - shadow;
-        keys.push_back({Qt::transparent, QString("sample rays of pixel (%1,%2)%3:")
-                                             .arg(focus->pixel % s.width()).arg(focus->pixel / s.width())
-                                             .arg(fan.cut ? QString(", the first %1").arg(fan.rays.size()) : QString())});
-        keys.push_back({palette::kSampleRay, QString("%1 eye sample%2 (dots), %3 reflection/refraction ray%4: hit")
-                                                 .arg(eye).arg(eye == 1 ? "" : "s").arg(other).arg(other == 1 ? "" : "s")});
-        keys.push_back({palette::kSampleMissed, QString("hit nothing (%1)").arg(fan.count(rc::FanOutcome::Missed))});
-        keys.push_back({palette::kShadowLit, QString("shadow rays reaching the light (%1 of %2)")
-                                                 .arg(fan.count(rc::FanOutcome::Lit)).arg(shadow)});
-        keys.push_back({palette::kShadowBlocked, QString("shadow rays blocked (%1 of %2)")
-                                                     .arg(fan.count(rc::FanOutcome::Blocked)).arg(shadow)});
-        double radius = 0.0;
-        for (const rc::Sphere& l : fan.lights) radius = std::max(radius, l.r);
-        if (radius > 0.0)
-            keys.push_back({palette::kLight, QString("light's sphere (r %1), %2 points a hit")
-                                                 .arg(radius, 0, 'g', 3).arg(fan.shadowSamples)});
-        if (fan.notCast > 0)
-            keys.push_back({Qt::transparent, QString("no ray to %1 light points (behind the surface)").arg(fan.notCast)});
-    }
+    if (o.samples && focus) appendSampleKeys(t.keys, s, *focus);
     // The miss in focus's cause and the selected pixel (rc::focusEntries)
     addKeys(rc::focusEntries(s, sel, shown, drawn_));
-    caption << extraCaption_;
-    if (const auto& last = s.recorder().lastEvent(); (sel.pixel >= 0 || sel.event >= 0) && last && !session.done())
-        keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
-
-    // Fit the font to the view
-    if (!o.legend || !keysShown_) keys.clear();
-    // A caption and key taller than the view (beside the image), or than half of it (over
-    // the image), get a smaller font rather than be cut off (untick Legend to hide the key)
-    const double rows = double(keys.size() + caption.size()) + 4;
-    const double room = std::max(image.left() - area.left(), area.right() - image.right());
-    const double tall = room < 250 ? 0.55 : 0.95;
-    if (rows * (QFontMetricsF(p.font()).height() + 2) > tall * area.height()) {
-        QFont small = p.font();
-        const double f = std::max(0.6, tall * area.height() / (rows * (QFontMetricsF(small).height() + 2)));
-        small.setPointSizeF(small.pointSizeF() * f);
-        p.setFont(small);
-    }
-    // Measure the caption and the key
-    const QFontMetricsF fm(p.font());
-    const double lh = fm.height() + 2;
-    p.setRenderHint(QPainter::Antialiasing, true);
-    double cw = 0;
-    for (const QString& c : caption) cw = std::max(cw, fm.horizontalAdvance(c));
-    double kw = 0;
-    for (const auto& k : keys) kw = std::max(kw, fm.horizontalAdvance(k.second) + lh * 1.3);
-    // A heatmap's colour bar, with values
-    // A scale shared by two renders side by side is drawn once, beside the first
-    const bool bar = o.legend && (keysShown_ || heatTop_ <= 0.0) &&
-                     (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate);
-    QString barTitle = heatmap_ == Heatmap::Tests     ? "tests per pixel (log scale)"
-                       : heatmap_ == Heatmap::HitRate ? "cache hit rate per pixel, all its rays"
-                                                      : "step of a pixel's first ray";
-    if (heatTop_ > 0.0) barTitle += ", one scale for both";
-    if (o.legend && heatmap_ == Heatmap::HitRate) keys.push_back({palette::kNoLookups, "no cache lookups"});
-    double top = 0;
-    lastTop_ = 0;
-    // The scale the picture is painted with (drawn as a bar, or shared with the first)
-    if (o.legend && (heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate))
-        lastTop_ = heatTop_ > 0.0 ? heatTop_ : HeatmapBuilder::scaleOf(s, heatmap_);
-    if (bar) {
-        top = lastTop_;
-        // Room for five labels apart
-        kw = std::max({kw, 220.0, 7.0 * fm.horizontalAdvance("100.0"), fm.horizontalAdvance(barTitle) + 16});
-    }
-    legendWidth_ = std::max(cw, kw) + 32;
-    // Lines longer than the room beside the image (or the view) wrap
-    const double leftRoom = image.left() - area.left(), rightRoom = area.right() - image.right();
-    const double beside = std::max(leftRoom, rightRoom);
-    // (the window keeps up to a third of a view beside its image: see MainWindow::keepLegendBeside)
-    // (and a margin narrower than a few words is not used: lines of one word would not read)
-    minBeside_ = 7.0 * lh + 32;
-    const double widest = (beside >= 0.2 * area.width() && beside >= minBeside_ ? beside : area.width()) - 32;
-    cw = std::min(cw, widest);
-    // A colour bar too wide for the margin keeps the width its labels need, under the
-    // picture's corner; a key of lines wraps
-    const double barWidth = std::min(kw, area.width() - 32);
-    kw = std::min(kw, widest);
-    if (bar && keys.empty() && rightRoom < barWidth + 32) kw = barWidth;
-    auto height = [&](const QString& text, double width) {
-        return std::max(lh, fm.boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, text).height() + 2);
-    };
-    double capHeight = 8, keyHeight = 8;
-    for (const QString& c : caption) capHeight += height(c, cw);
-    for (const auto& k : keys) keyHeight += height(k.second, kw - lh * 1.3);
-    const double titleHeight = bar ? height(barTitle, kw - 16) : 0.0;
-    const double barHeight = bar ? lh * 2.2 + titleHeight : 0.0;
-    keyHeight += barHeight;
-    // A caption whose wrapped lines run past the view, or a caption and key that the margin
-    // would hold one above the other but for their height: once more, in a font that fits
-    const double capRoom = area.bottom() - std::max(area.top() + 8, image.top()) - 8;
-    // (one above the other only at three quarters of the font or more: smaller, the caption
-    // goes over the picture's corner, legible from the back of the room)
-    const bool stack = rightRoom >= kw + 32 && rightRoom >= cw + 32 && capRoom / (capHeight + 8 + keyHeight) >= 0.75 / 0.95;
-    const double need = stack ? capHeight + 8 + keyHeight : capHeight;
-    if (need > capRoom && !refitting_) {
-        QFont smaller = p.font();
-        smaller.setPointSizeF(smaller.pointSizeF() * std::max(0.6, 0.95 * capRoom / need));
-        p.save();
-        p.setFont(smaller);
-        refitting_ = true;
-        paintLegend(p, s, o, sel, area, image);
-        refitting_ = false;
-        p.restore();
-        return;
-    }
-    // Beside the image when a margin has room, else over it (caption top left, key bottom left)
-    QRectF capBox(area.left() + 8, area.top() + 8, cw + 16, capHeight);
-    QRectF keyBox(area.left() + 8, area.bottom() - 8 - keyHeight, kw + 16, keyHeight);
-    const QPointF besideTop(image.right() + 8, std::max(area.top() + 8, image.top()));
-    if (rightRoom >= kw + 32) {
-        keyBox.moveTopLeft(besideTop);
-        if (rightRoom >= cw + 32 && keyBox.bottom() + capBox.height() + 8 < area.bottom()) {
-            capBox.moveTopLeft(keyBox.topLeft());
-            keyBox.moveTop(capBox.bottom() + 8);
-        } else if (rightRoom >= cw + 32 && keys.empty()) {
-            // Only a colour bar: the caption beside the image, the bar under the picture's corner
-            capBox.moveTopLeft(keyBox.topLeft());
-            keyBox.moveTopLeft(QPointF(area.left() + 8, area.bottom() - 8 - keyHeight));
+    t.info << extraCaption_;
+    // The beam-tree heatmap: the paper's measure of coherence beside it, once the image is complete
+    if (heatmap_ == Heatmap::BeamNode && s.session().done()) {
+        if (beamSerial_ != s.serial()) {
+            beams_ = s.beams().build();
+            beamSerial_ = s.serial();
         }
-    } else if (rightRoom >= cw + 32 && keys.empty()) {
-        // A colour bar wider than the margin: the caption beside, the bar under the corner
-        capBox.moveTopLeft(besideTop);
-    } else if (leftRoom >= kw + 32) {
-        keyBox.moveTopLeft(QPointF(area.left() + 8, std::max(area.top() + 16, image.top()) + capBox.height()));
+        t.info << QString("beam tree %L1 beams; coherence %2 = average ray-tree size %3 / beam-tree size")
+                      .arg(beams_.nodes).arg(beams_.coherence, 0, 'g', 3).arg(beams_.averageRayTreeSize, 0, 'f', 2);
     }
-    // Draw the caption
+    if (const auto& last = s.recorder().lastEvent(); (sel.pixel >= 0 || sel.event >= 0) && last && !s.session().done())
+        t.keys.push_back({palette::kRay, QString("cross: pixel (%1,%2) being traced").arg(last->task.pixel % s.width()).arg(last->task.pixel / s.width())});
+    if (!o.legend || !keysShown_) t.keys.clear();
+    // A heatmap's colour bar; a scale shared by two renders side by side is drawn once, beside the first
+    const bool scaled = heatmap_ == Heatmap::Tests || heatmap_ == Heatmap::VisitOrder || heatmap_ == Heatmap::HitRate;
+    lastTop_ = o.legend && scaled ? (heatTop_ > 0.0 ? heatTop_ : HeatmapBuilder::scaleOf(s, heatmap_)) : 0.0;
+    t.bar = o.legend && scaled && (keysShown_ || heatTop_ <= 0.0);
+    t.barTitle = heatmap_ == Heatmap::Tests     ? "tests per pixel (log scale)"
+                 : heatmap_ == Heatmap::HitRate ? "cache hit rate per pixel, all its rays"
+                                                : "step of a pixel's first ray";
+    if (heatTop_ > 0.0) t.barTitle += ", one scale for both";
+    if (o.legend && heatmap_ == Heatmap::HitRate) t.keys.push_back({palette::kNoLookups, "no cache lookups"});
+    return t;
+}
+
+QString OverlayPainter::barValue(double t) const {
+    if (heatmap_ == Heatmap::HitRate) return QString("%1%").arg(int(std::lround(100 * t)));
+    const double v = heatmap_ == Heatmap::Tests ? std::expm1(t * std::log1p(lastTop_)) : t * lastTop_;
+    return QString::number(v, 'f', v < 10 ? 1 : 0);
+}
+
+LegendLayout OverlayPainter::layOut(const QFont& font, const QRectF& area, const QRectF& image, const LegendText& t) {
+    // The largest font whose boxes fit the column beside the picture
+    LegendLayout layout;
+    for (const double scale : kFontScalesToFit) {
+        legendFont_ = legendFont(font, scale);
+        const QFontMetricsF fm(legendFont_);
+        QStringList keyLines;
+        for (const auto& k : t.keys) keyLines << k.second;
+        const LegendBlock info = linesBlock(fm, t.info, 0.0);
+        const LegendBlock key = linesBlock(fm, keyLines, fm.height() * kSwatchLines);
+        LegendBlock bar;
+        if (t.bar) {
+            // Room for three of its values apart, five when wider
+            bar.minWidth = 2 * kPadX + 4.0 * fm.horizontalAdvance(barValue(1.0) + "  ");
+            bar.naturalWidth = std::max(bar.minWidth, fm.horizontalAdvance(t.barTitle) + 2 * kPadX + 2);
+            const QString title = t.barTitle;
+            bar.height = [fm, title](double width) {
+                return 2 * kPadY + wrappedHeight(fm, title, width - 2 * kPadX) + fm.height() * (kBarStripLines + kBarValueLines) + 4;
+            };
+        }
+        // The room the window keeps beside the picture: the boxes unwrapped, in the view's font
+        if (scale == kFontScalesToFit.front())
+            legendWidth_ = std::max({info.naturalWidth, key.naturalWidth, bar.naturalWidth}) + 2 * kLegendGap;
+        layout = layOutLegend(area, image, info, key, bar);
+        layout.lineHeight = fm.height();
+        if (layout.fits) break;
+    }
+    return layout;
+}
+
+void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
+                                 const QRectF& area, const QRectF& image) {
+    const LegendText t = legendText(s, o, sel);
+    layout_ = layOut(p.font(), area, image, t);
+    legendKey_ = layout_.key.united(layout_.bar);
+    p.save();
+    p.setFont(legendFont_);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    drawInfo(p, t);
+    drawKeys(p, t);
+    drawBar(p, t);
+    p.restore();
+}
+
+namespace {
+
+/// A box's dark background; what is drawn in it until restore() stays inside it.
+void beginBox(QPainter& p, const QRectF& box) {
+    p.save();
+    p.setClipRect(box);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
-    p.drawRoundedRect(capBox, 6, 6);
+    p.drawRoundedRect(box, 6, 6);
     p.setPen(Qt::white);
-    double y = capBox.top() + 4;
-    for (const QString& c : caption) {
-        const double h = height(c, cw);
-        p.drawText(QRectF(capBox.left() + 8, y, cw, h), Qt::AlignVCenter | Qt::AlignLeft | Qt::TextWordWrap, c);
+}
+
+}  // namespace
+
+void OverlayPainter::drawInfo(QPainter& p, const LegendText& t) const {
+    const QRectF& box = layout_.info;
+    if (box.isEmpty()) return;
+    beginBox(p, box);
+    const QFontMetricsF fm(p.font());
+    const double width = box.width() - 2 * kPadX;
+    double y = box.top() + kPadY;
+    for (const QString& c : t.info) {
+        const double h = wrappedHeight(fm, c, width);
+        p.drawText(QRectF(box.left() + kPadX, y, width, h), Qt::AlignVCenter | Qt::AlignLeft | Qt::TextWordWrap, c);
         y += h;
     }
-    // Draw the key
-    legendKey_ = QRectF();
-    if (keys.empty() && !bar) return;
-    legendKey_ = keyBox;
-    p.setPen(Qt::NoPen);
-    p.setBrush(QColor(0, 0, 0, 175));
-    p.drawRoundedRect(keyBox, 6, 6);
-    y = keyBox.top() + 4;
-    for (const auto& [colour, text] : keys) {
+    p.restore();
+}
+
+void OverlayPainter::drawKeys(QPainter& p, const LegendText& t) const {
+    const QRectF& box = layout_.key;
+    if (box.isEmpty()) return;
+    beginBox(p, box);
+    const QFontMetricsF fm(p.font());
+    const double lh = fm.height(), indent = lh * kSwatchLines, width = box.width() - 2 * kPadX - indent;
+    double y = box.top() + kPadY;
+    for (const auto& [colour, text] : t.keys) {
         if (colour.alpha() > 0) {
             p.setPen(QPen(Qt::black, 1));
             p.setBrush(colour);
-            p.drawRect(QRectF(keyBox.left() + 8, y + lh * 0.2, lh * 0.8, lh * 0.6));
+            p.drawRect(QRectF(box.left() + kPadX, y + lh * 0.2, lh * 0.8, lh * 0.6));
         }
-        const double h = height(text, kw - lh * 1.3);
+        const double h = wrappedHeight(fm, text, width);
         p.setPen(Qt::white);
-        p.drawText(QRectF(keyBox.left() + 8 + lh * 1.3, y, kw - lh * 1.3, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap,
-                   text);
+        p.drawText(QRectF(box.left() + kPadX + indent, y, width, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, text);
         y += h;
     }
-    // Draw the colour bar and its values
-    if (!bar) return;
-    p.setPen(Qt::white);
-    p.drawText(QRectF(keyBox.left() + 8, y, kw - 16, titleHeight), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, barTitle);
+    p.restore();
+}
+
+void OverlayPainter::drawBar(QPainter& p, const LegendText& t) const {
+    const QRectF& box = layout_.bar;
+    if (box.isEmpty()) return;
+    beginBox(p, box);
+    const QFontMetricsF fm(p.font());
+    const double lh = fm.height(), width = box.width() - 2 * kPadX;
+    double y = box.top() + kPadY;
+    const double titleHeight = wrappedHeight(fm, t.barTitle, width);
+    p.drawText(QRectF(box.left() + kPadX, y, width, titleHeight), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, t.barTitle);
     y += titleHeight;
-    const QRectF strip(keyBox.left() + 8, y + 2, kw - 16, lh * 0.8);
+    const QRectF strip(box.left() + kPadX, y + 2, width, lh * kBarStripLines);
     QLinearGradient g(strip.topLeft(), strip.topRight());
     for (int k = 0; k <= 16; ++k) g.setColorAt(k / 16.0, palette::ramp(k / 16.0));
     p.setPen(QPen(Qt::black, 1));
     p.setBrush(g);
     p.drawRect(strip);
-    y += lh;
+    y = strip.bottom() + 2;
     p.setPen(Qt::white);
     // Five values, or three where five would touch
-    const int every = strip.width() < 7.0 * fm.horizontalAdvance(QString::number(top, 'f', 0) + "  ") ? 2 : 1;
+    const int every = strip.width() < 7.0 * fm.horizontalAdvance(barValue(1.0) + "  ") ? 2 : 1;
     for (int k = 0; k <= 4; k += every) {
-        const double t = k / 4.0;
-        const double v = heatmap_ == Heatmap::Tests ? std::expm1(t * std::log1p(top)) : t * top;
-        const QString label = heatmap_ == Heatmap::HitRate ? QString("%1%").arg(int(std::lround(100 * t)))
-                                                           : QString::number(v, 'f', v < 10 ? 1 : 0);
-        const double x = strip.left() + t * strip.width();
+        const double at = k / 4.0;
+        const QString label = barValue(at);
+        const double x = strip.left() + at * strip.width();
         const double wdt = fm.horizontalAdvance(label);
-        const double lx = std::clamp(x - wdt / 2, strip.left(), strip.right() - wdt);
-        p.drawText(QRectF(lx, y, wdt + 2, lh), Qt::AlignVCenter | Qt::AlignLeft, label);
+        const double lx = std::clamp(x - wdt / 2, strip.left(), std::max(strip.left(), strip.right() - wdt));
+        p.drawText(QRectF(lx, y, wdt + 2, lh * kBarValueLines), Qt::AlignVCenter | Qt::AlignLeft, label);
     }
+    p.restore();
 }
 
 }  // namespace rcgui

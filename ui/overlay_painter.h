@@ -8,6 +8,8 @@
 #include <QPainter>
 #include <QStringList>
 
+#include "analysis/beam_tree.h"
+#include "legend_layout.h"
 #include "overlay_options.h"
 #include "view/legend.h"
 #include "view/overlay_shapes.h"
@@ -37,9 +39,8 @@ public:
     /// Paints in image coordinates (the painter maps them to the widget); `scale` is
     /// widget pixels per image pixel, so marks keep a readable size at any zoom.
     void paint(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel, double scale);
-    /// Paints the caption and colour key in widget coordinates inside `area`.
-    /// The key goes beside `image` (its rectangle in widget coordinates) when a margin
-    /// has room, else over it.
+    /// Paints the info box, the colour key and the colour bar in widget coordinates inside
+    /// `area`, beside `image` (the picture's rectangle in widget coordinates): see layOutLegend.
     void paintLegend(QPainter& p, const rc::SessionState& s, const Overlays& o, const rc::Selection& sel,
                      const QRectF& area, const QRectF& image);
     /// The heatmap shown, for its colour bar in the key, and the top of its scale (0: the
@@ -56,10 +57,14 @@ public:
     void setKeysShown(bool on) { keysShown_ = on; }
     /// Where the last key was drawn (widget coordinates; empty: none).
     const QRectF& legendKey() const { return legendKey_; }
+    /// The rectangles of the last paintLegend(): the picture, the info box, key and colour bar.
+    const LegendLayout& legendLayout() const { return layout_; }
+    /// The font the last paintLegend() drew in (see legendFont).
+    const QFont& legendDrawFont() const { return legendFont_; }
     /// The width the last caption and key wanted beside the image (widget pixels).
     double legendWidth() const { return legendWidth_; }
-    /// The narrowest margin the caption and key wrap into (widget pixels): narrower, they
-    /// go over the picture's corners.
+    /// The narrowest margin the caption and key wrap into (widget pixels). They never go
+    /// over the picture: any margin is used, so this is 0.
     double legendMinBeside() const { return minBeside_; }
     /// Events a paint reads into the per-pixel layers at most (0: all): a long log is
     /// read over several paints, so that no paint stalls the window. `more` is called
@@ -72,6 +77,21 @@ public:
     bool layersPending() const { return pending_; }
 
 private:
+    /// What the legend says: the info box's lines, the key's lines, the colour bar's title.
+    struct LegendText {
+        QStringList info;
+        std::vector<std::pair<QColor, QString>> keys;
+        bool bar = false;
+        QString barTitle;
+    };
+    LegendText legendText(const rc::SessionState& s, const Overlays& o, const rc::Selection& sel);
+    /// The boxes of `t` beside `image`, in the largest legend font that fits (sets legendFont_).
+    LegendLayout layOut(const QFont& font, const QRectF& area, const QRectF& image, const LegendText& t);
+    void drawInfo(QPainter& p, const LegendText& t) const;
+    void drawKeys(QPainter& p, const LegendText& t) const;
+    void drawBar(QPainter& p, const LegendText& t) const;
+    /// The colour bar's value at fraction `t` of its scale, as labelled.
+    QString barValue(double t) const;
     void paintFocus(QPainter& p, const rc::SessionState& s, const Projector& proj, const rc::RayFocus& f,
                     const Overlays& o);
     /// One shape of the core's (rc::focusShapes), in its role's colour and line.
@@ -99,8 +119,11 @@ private:
     QRectF legendKey_;
     double legendWidth_ = 0.0;
     double lineScale_ = 1.0;
-    double minBeside_ = 0.0;
-    bool refitting_ = false;  ///< paintLegend() is painting again in a smaller font
+    double minBeside_ = 0.0;  ///< see legendMinBeside()
+    LegendLayout layout_;
+    std::uint64_t beamSerial_ = 0;  ///< the state beams_ was built from (its serial)
+    rc::BeamTreeStats beams_;       ///< the beam tree's size and coherence, for the info box
+    QFont legendFont_;
     std::size_t eventBudget_ = 0;
     std::function<void()> more_;
     bool pending_ = false;

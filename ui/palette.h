@@ -5,6 +5,7 @@
 
 #include "search/counters.h"
 #include "view/palette.h"
+#include "view/sample_fan.h"
 
 namespace rcgui::palette {
 
@@ -32,6 +33,9 @@ inline const QColor kSampleMissed = qt(rc::colours::kSampleMissed);  ///< sample
 inline const QColor kShadowLit = qt(rc::colours::kShadowLit);  ///< shadow samples that reach the light
 inline const QColor kShadowBlocked = qt(rc::colours::kShadowBlocked);  ///< shadow samples an object stops
 inline const QColor kNoLookups = qt(rc::colours::kNoLookups);  ///< heatmaps: a pixel with no cache lookups
+
+/// Colour of a sample ray by its outcome: hit, missed, lit or blocked.
+QColor fanOutcome(rc::FanOutcome o);
 
 /// A distinct, stable colour for a label (regions, beams).
 QColor label(std::int64_t id, int alpha = 255);

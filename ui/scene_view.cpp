@@ -334,22 +334,54 @@ void SceneView::paintBodies(QPainter& p, const std::vector<bool>& blocker, int t
     }
 }
 
+QRectF SceneView::discOf(const rc::Sphere& s) const {
+    const QPointF c = toWidget(s.c);
+    const double r = std::max(1.0, s.r * scale_);
+    return QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r);
+}
+
+QPolygonF SceneView::hullOf(const rc::Sphere& a, const rc::Sphere& b) const {
+    return discHull(toWidget(a.c), a.r * scale_, toWidget(b.c), b.r * scale_);
+}
+
 void SceneView::paintEvent(QPaintEvent*) {
     // Frame the sketch; project spheres and hulls to the widget
     QPainter p(this);
     p.fillRect(rect(), QColor(28, 30, 36));
     p.setRenderHint(QPainter::Antialiasing, true);
     frame();
-    const SceneSketch& k = sketch_;
     const double lw = std::max(1.0, QFontMetricsF(font()).height() / 9.0);  // lines follow Large fonts
-    auto disc = [&](const rc::Sphere& s) {
-        const QPointF c = toWidget(s.c);
-        const double r = std::max(1.0, s.r * scale_);
-        return QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r);
-    };
-    auto hull = [&](const rc::Sphere& a, const rc::Sphere& b) {
-        return discHull(toWidget(a.c), a.r * scale_, toWidget(b.c), b.r * scale_);
-    };
+    paintBodiesLayer(p, lw);
+    paintFocusShapes(p, lw);
+    const bool fan = paintFan(p, lw);
+    paintRays(p, fan, lw);
+    // The caption, and the labels clear of it and of each other
+    const QStringList cap = captionLines(fan);
+    caption_ = cap.join("\n");
+    const QFontMetricsF fm(font());
+    // Lines wider than the view wrap: the caption keeps the font of the rest (large on a
+    // projector), never cut off
+    double cw = 0;
+    for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
+    cw = std::min(cw, std::max(40.0, width() - 32.0));
+    double total = 0;
+    for (const QString& c : cap) total += fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+    captionRect_ = QRectF(8, 8, cw + 16, total + 8);
+    paintLabels(p, lw);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 175));
+    p.drawRoundedRect(captionRect_, 6, 6);
+    p.setPen(Qt::white);
+    double y = 12;
+    for (const QString& c : cap) {
+        const double h = fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+        p.drawText(QRectF(16, y, cw + 2, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, c);
+        y += h;
+    }
+}
+
+void SceneView::paintBodiesLayer(QPainter& p, double lw) {
+    const SceneSketch& k = sketch_;
     // Which objects the overlays mark: the potential blockers and the target
     std::vector<bool> blocker(k.bodies.size(), false);
     for (int id : k.hull.blockers) blocker[std::size_t(id)] = true;
@@ -375,37 +407,39 @@ void SceneView::paintEvent(QPaintEvent*) {
     }
     p.drawPixmap(0, 0, bodies_);
 
+}
+
+void SceneView::paintFocusShapes(QPainter& p, double lw) const {
+    const SceneSketch& k = sketch_;
     // The blocker hull of origin and target, its potential blockers, origin and target
     if (k.hull.valid() && hullShown_) {
         p.setPen(pen(palette::kHull, 2.5 * lw));
         p.setBrush(withAlpha(palette::kHull, 45));
-        p.drawPolygon(hull(k.hull.a, k.hull.b));
+        p.drawPolygon(hullOf(k.hull.a, k.hull.b));
         p.setBrush(Qt::NoBrush);
         p.setPen(pen(palette::kOrigin, 2.0 * lw, Qt::DashLine));
-        if (k.hull.a.r > 0) p.drawEllipse(disc(k.hull.a));
+        if (k.hull.a.r > 0) p.drawEllipse(discOf(k.hull.a));
         p.setPen(pen(palette::kTarget, 3.0 * lw));
         p.setBrush(withAlpha(palette::kTarget, 50));
-        if (k.hull.b.r > 0) p.drawEllipse(disc(k.hull.b));
+        if (k.hull.b.r > 0) p.drawEllipse(discOf(k.hull.b));
         p.setPen(pen(palette::kBlocker, 3.0 * lw));
         p.setBrush(withAlpha(palette::kBlocker, 110));
-        for (int id : k.hull.blockers) p.drawEllipse(disc(k.bodies[std::size_t(id)].bound));
+        for (int id : k.hull.blockers) p.drawEllipse(discOf(k.bodies[std::size_t(id)].bound));
     }
     // The cylinder of safety: a capsule, so its outline is the hull of its end discs
     const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
     if (k.focus && cyl.radius > 0.0 && cylinderShown_) {
         p.setPen(pen(palette::kCylinder, 2.5 * lw, k.cylinder.cached ? Qt::SolidLine : Qt::DashLine));
         p.setBrush(withAlpha(palette::kCylinder, 60));
-        p.drawPolygon(hull({cyl.a, cyl.radius}, {cyl.b, cyl.radius}));
+        p.drawPolygon(hullOf({cyl.a, cyl.radius}, {cyl.b, cyl.radius}));
     }
+}
+
+bool SceneView::paintFan(QPainter& p, double lw) const {
+    const SceneSketch& k = sketch_;
     // The sample rays of the pixel in focus: the shadow rays fan out to the light's sphere
     const bool fan = samplesShown_ && !k.fan.rays.empty();
     if (fan) {
-        auto colourOf = [](rc::FanOutcome o) {
-            return o == rc::FanOutcome::Hit      ? palette::kSampleRay
-                   : o == rc::FanOutcome::Missed ? palette::kSampleMissed
-                   : o == rc::FanOutcome::Lit    ? palette::kShadowLit
-                                             : palette::kShadowBlocked;
-        };
         // Solid pens (a dash pattern costs a stroke per dash); a large fan in hairlines and
         // without halos, as in the image view: wide pens are filled as paths, slow for thousands
         const bool hairlines = int(k.fan.rays.size()) > rc::SampleFan::kHaloRays;
@@ -415,7 +449,7 @@ void SceneView::paintEvent(QPaintEvent*) {
                 p.drawLine(toWidget(r.from), toWidget(r.to));
             }
         for (const rc::FanRay& r : k.fan.rays) {
-            p.setPen(pen(colourOf(r.outcome), hairlines ? 1.0 : 1.3 * lw));
+            p.setPen(pen(palette::fanOutcome(r.outcome), hairlines ? 1.0 : 1.3 * lw));
             p.drawLine(toWidget(r.from), toWidget(r.to));
             if (r.outcome == rc::FanOutcome::Blocked) {
                 p.setPen(pen(withAlpha(palette::kShadowBlocked, 90), 1.0));
@@ -428,8 +462,13 @@ void SceneView::paintEvent(QPaintEvent*) {
         if (!fan || !(l.r > 0.0)) continue;
         p.setPen(pen(palette::kLight, 2.0 * lw));
         p.setBrush(withAlpha(palette::kLight, 60));
-        p.drawEllipse(disc(l));
+        p.drawEllipse(discOf(l));
     }
+    return fan;
+}
+
+void SceneView::paintRays(QPainter& p, bool fan, double lw) const {
+    const SceneSketch& k = sketch_;
     // The ray tree of the pixel in focus (the fan holds its rays: only the focus then); the
     // ray in focus thick, with its direction
     for (const auto& s : k.rays) {
@@ -476,8 +515,11 @@ void SceneView::paintEvent(QPaintEvent*) {
         }
     }
     // [scene-view-paint]
+}
 
-    const QFontMetricsF fm(font());
+QStringList SceneView::captionLines(bool fan) const {
+    const SceneSketch& k = sketch_;
+    const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
     // Caption: what is seen, with the sizes the paper's figures compare
     QStringList cap;
     const QString angleName = angle_ == SceneAngle::Side    ? "Side view, across the ray"
@@ -516,51 +558,16 @@ void SceneView::paintEvent(QPaintEvent*) {
                    .arg(k.fan.count(rc::FanOutcome::Lit)).arg(k.fan.count(rc::FanOutcome::Blocked))
                    .arg(k.fan.cut ? QString(", the first %1").arg(k.fan.rays.size()) : QString());
     }
-    caption_ = cap.join("\n");
-    // Lines wider than the view wrap: the caption keeps the font of the rest (large on a
-    // projector), never cut off
-    double cw = 0;
-    for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
-    cw = std::min(cw, std::max(40.0, width() - 32.0));
-    auto textHeight = [&](const QString& c) {
-        return fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
-    };
-    double total = 0;
-    for (const QString& c : cap) total += textHeight(c);
-    const QRectF box(8, 8, cw + 16, total + 8);
-    // Labels: each in the view, clear of the caption and of the labels before it (moved a
-    // line down or up at a time until it is), so that none hides another
+    return cap;
+}
+
+void SceneView::paintLabels(QPainter& p, double lw) {
+    const SceneSketch& k = sketch_;
+    const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
+    const QFontMetricsF fm(font());
     labelRects_.clear();
-    auto label = [&](const QPointF& at, const QString& t, const QColor& c) {
-        QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
-        if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
-        if (r.left() < 4) r.moveLeft(4);
-        // Above the view's own controls (the angle and whole-scene boxes at its foot)
-        const double floor = std::min({double(height()), double(angleBox_->geometry().top()), double(wholeBox_->geometry().top())}) - 4;
-        auto inView = [&](QRectF q) {
-            if (q.bottom() > floor) q.moveBottom(floor);
-            if (q.top() < 4) q.moveTop(4);
-            return q;
-        };
-        auto clashes = [&](const QRectF& q) {
-            if (q.intersects(box) || q.bottom() > floor) return true;
-            for (const QRectF& o : labelRects_)
-                if (o.intersects(q)) return true;
-            return false;
-        };
-        const double line = r.height() + 3;
-        QRectF at0 = inView(r);
-        for (int i = 0; i < 40 && clashes(at0); ++i) at0 = inView(r.translated(0, (i % 2 == 0 ? 1 : -1) * (i / 2 + 1) * line));
-        if (clashes(at0)) return;  // no room left: the caption names what it would have
-        r = at0;
-        labelRects_.push_back(r);
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(0, 0, 0, 150));
-        p.drawRoundedRect(r, 3, 3);
-        p.setPen(c);
-        p.drawText(r, Qt::AlignCenter, t);
-    };
-    label(eye, "eye", Qt::white);
+    const auto label = [&](const QPointF& at, const QString& t, const QColor& c) { placeLabel(p, at, t, c); };
+    label(toWidget(k.eye), "eye", Qt::white);
     // The paper's Figure 1: the ray, its cylinder of safety and the sphere it hits, named
     if (k.focus && cylinderShown_) {
         const int hit = k.focus->hit;
@@ -586,18 +593,40 @@ void SceneView::paintEvent(QPaintEvent*) {
             label(toWidget(b.c) + QPointF(b.r * scale_ * 0.7, b.r * scale_), QString("blocker #%1").arg(id), palette::kBlocker);
         }
     }
+}
 
-    captionRect_ = box;
+void SceneView::placeLabel(QPainter& p, const QPointF& at, const QString& t, const QColor& c) {
+    // Each label in the view, clear of the caption and of the labels before it (moved a
+    // line down or up at a time until it is), so that none hides another
+    const QFontMetricsF fm(font());
+    const QRectF& box = captionRect_;
+    QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
+    if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
+    if (r.left() < 4) r.moveLeft(4);
+    // Above the view's own controls (the angle and whole-scene boxes at its foot)
+    const double floor = std::min({double(height()), double(angleBox_->geometry().top()), double(wholeBox_->geometry().top())}) - 4;
+    auto inView = [&](QRectF q) {
+        if (q.bottom() > floor) q.moveBottom(floor);
+        if (q.top() < 4) q.moveTop(4);
+        return q;
+    };
+    auto clashes = [&](const QRectF& q) {
+        if (q.intersects(box) || q.bottom() > floor) return true;
+        for (const QRectF& o : labelRects_)
+            if (o.intersects(q)) return true;
+        return false;
+    };
+    const double line = r.height() + 3;
+    QRectF at0 = inView(r);
+    for (int i = 0; i < 40 && clashes(at0); ++i) at0 = inView(r.translated(0, (i % 2 == 0 ? 1 : -1) * (i / 2 + 1) * line));
+    if (clashes(at0)) return;  // no room left: the caption names what it would have
+    r = at0;
+    labelRects_.push_back(r);
     p.setPen(Qt::NoPen);
-    p.setBrush(QColor(0, 0, 0, 175));
-    p.drawRoundedRect(box, 6, 6);
-    p.setPen(Qt::white);
-    double y = 12;
-    for (const QString& c : cap) {
-        const double h = textHeight(c);
-        p.drawText(QRectF(16, y, cw + 2, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, c);
-        y += h;
-    }
+    p.setBrush(QColor(0, 0, 0, 150));
+    p.drawRoundedRect(r, 3, 3);
+    p.setPen(c);
+    p.drawText(r, Qt::AlignCenter, t);
 }
 
 void SceneView::mousePressEvent(QMouseEvent* e) { lastPos_ = e->position(); }

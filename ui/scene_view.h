@@ -109,6 +109,22 @@ private:
     /// Draws the objects on screen, farthest first; potential blockers, the target and
     /// the ray's objects in bold.
     void paintBodies(QPainter& p, const std::vector<bool>& blocker, int target, double lw) const;
+    /// The bodies from their layer, drawn again only when the sketch or the view changed.
+    void paintBodiesLayer(QPainter& p, double lw);
+    /// The blocker hull, its blockers, origin and target; the cylinder of safety.
+    void paintFocusShapes(QPainter& p, double lw) const;
+    /// The sample rays of the pixel in focus and the lights' spheres; whether it drew them.
+    bool paintFan(QPainter& p, double lw) const;
+    /// The ray tree (only the ray in focus under a fan), the lights, the eye, the ray's axis.
+    void paintRays(QPainter& p, bool fan, double lw) const;
+    /// The caption's lines: what is seen, with the sizes the paper's figures compare.
+    QStringList captionLines(bool fan) const;
+    /// The labels of the eye, lights, Figure 1's and Figure 2's shapes (fills labelRects_).
+    void paintLabels(QPainter& p, double lw);
+    /// One label near `at`, clear of captionRect_ and the labels placed before it (none if no room).
+    void placeLabel(QPainter& p, const QPointF& at, const QString& t, const QColor& c);
+    QRectF discOf(const rc::Sphere& s) const;
+    QPolygonF hullOf(const rc::Sphere& a, const rc::Sphere& b) const;
     SceneAngle angle_ = SceneAngle::Side;
     double yaw_ = 0.0, pitch_ = 0.0, zoom_ = 1.0;
     bool whole_ = false;
