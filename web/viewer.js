@@ -20,15 +20,13 @@
   if (params.get('embed') === '1') document.body.classList.add('embed');
 
   // The colours, role styles and heatmap ramp are the core's (view/palette.h, which the Qt
-  // GUI draws with too), sent by the worker when the web edition has loaded (usePalette)
-  let kRay, kCylinder, kHull, kTarget, kBlocker, kQueued, kDeferred, kRegion, kRegionEdge, kSelection, kMissCause;
-  let kMissColours = [], kRoleStyles = {}, kRamp = [[0, 0, 0]];
+  // GUI draws with too), sent by the worker when the web edition has loaded (usePalette); the
+  // picture's own colours (heatmap, regions, misses) the core sets in it
+  let kRay, kQueued, kDeferred, kSelection;
+  let kRoleStyles = {}, kRamp = [[0, 0, 0]];
   function usePalette(p) {
     const c = p.colours;
-    [kRay, kCylinder, kHull, kTarget, kBlocker, kQueued, kDeferred, kRegion, kRegionEdge, kSelection, kMissCause] =
-      [c.ray, c.cylinder, c.hull, c.target, c.blocker, c.queued, c.deferred, c.region, c.regionEdge, c.selection,
-       c.missCause];
-    kMissColours = p.misses;
+    [kRay, kQueued, kDeferred, kSelection] = [c.ray, c.queued, c.deferred, c.selection];
     kRoleStyles = p.roles;
     kRamp = p.ramp;
   }
@@ -96,7 +94,6 @@
     if (m.type === 'loaded') {
       maxSize = m.maxSize;
       for (const id of ['width', 'height']) $(id).max = maxSize;
-      kMissNames = m.missReasons;
       usePalette(m.palette);
       fillChoices(m.registry);
       fillScenes(m.scenes);
@@ -436,7 +433,6 @@
       $('key').appendChild(li);
     }
   }
-  let kMissNames = [];
 
   function showStatistics(...renders) {
     const rows = [['rays', 'rays'], ['eye rays', 'primary'], ['shadow rays', 'shadow'],
