@@ -5,6 +5,7 @@
 
 #include "palette.h"
 #include "session_controller.h"
+#include "view/heatmap.h"
 
 namespace rcgui {
 
@@ -12,10 +13,7 @@ double HeatmapBuilder::scaleOf(const rc::SessionState& s, Heatmap mode) {
     if (mode == Heatmap::VisitOrder) return std::max<double>(1.0, double(s.session().steps()));
     if (mode == Heatmap::HitRate) return 1.0;
     if (mode != Heatmap::Tests) return 0.0;
-    std::int32_t most = 1;
-    const int n = s.width() * s.height();
-    for (int px = 0; px < n; ++px) most = std::max(most, s.recorder().testsAt(px));
-    return double(most);
+    return rc::testsTop(s.recorder());
 }
 
 std::optional<double> HeatmapBuilder::hitRate(const rc::SessionState& s, int px) {
@@ -34,12 +32,10 @@ QImage HeatmapBuilder::build(const rc::SessionState& s, Heatmap mode, int path, 
     switch (mode) {
         case Heatmap::None: break;
         case Heatmap::Tests: {
-            // Logarithmic: a pixel's tests span 1 to thousands
+            // The page's rule too (rc::testsHeat): a log scale up to the shared top
             const double most = top > 0.0 ? top : scaleOf(s, mode);
-            const double logTop = std::log1p(most);
             for (int px = 0; px < n; ++px)
-                if (rec.firstVisit(px) >= 0)
-                    set(px, palette::ramp(std::min(1.0, std::log1p(double(rec.testsAt(px))) / logTop)));
+                if (const std::optional<double> t = rc::testsHeat(rec, px, most)) set(px, palette::ramp(*t));
             break;
         }
         case Heatmap::HitMiss: {

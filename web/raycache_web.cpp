@@ -3,6 +3,7 @@
 // stepped ray by ray, as in the Qt GUI, and its overlays are the core's (rc::focusShapes,
 // rc::missLayer, rc::regionLayer, rc::focusCaption): nothing here computes an image, an
 // answer or an overlay's geometry, it only hands them over.
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -30,6 +31,9 @@
 #include "view/registry_listing.h"
 #include "view/scene_list.h"
 #include "view/tour.h"
+#include "view/tour_stop.h"
+#include "view/claim.h"
+#include "view/heatmap.h"
 
 namespace {
 
@@ -60,20 +64,25 @@ std::string missReasonNames() {
     return out;
 }
 
-// A stop of a tour that travels with the page (under /tours), read by the core's parser,
-// as JSON: {title, caption, page, stops, settings: [[key, value], ...]}; {error} if it
-// cannot be read
+// A tour that travels with the page (under /tours)
+Tour pageTour(const std::string& name) { return loadTour("/tours/" + name + ".json"); }
+
+// A stop of a tour that travels with the page, as the core reads and plans it (rc::planOf),
+// as JSON: {title, caption, page, tour, stops, plan: {scene, width, ..., qtOnly}}; {error}
+// if it cannot be read
 std::string tourStop(const std::string& name, int stop) {
     try {
-        const Tour tour = loadTour("/tours/" + name + ".json");
-        if (stop < 1 || stop > int(tour.stops.size()))
-            return nlohmann::json{{"error", tour.file + ": no stop " + std::to_string(stop) + " (it has " +
-                                                std::to_string(tour.stops.size()) + ")"}}.dump();
+        const Tour tour = pageTour(name);
+        const StopPlan p = planOf(tour, stop);
         const TourStop& st = tour.stops[std::size_t(stop - 1)];
-        nlohmann::json settings = nlohmann::json::array();
-        for (const TourSetting& s : st.settings) settings.push_back({s.key, s.value});
+        nlohmann::json plan = {{"scene", p.scene},       {"width", p.width},     {"height", p.height},
+                               {"cache", p.cache},       {"order", p.order},     {"accel", p.accel},
+                               {"band", p.band},         {"overlays", p.overlays}, {"heatmap", p.heatmap},
+                               {"compare", p.compareCache.empty() ? "" : p.compareCache + ":" + p.compareOrder},
+                               {"zoom", p.zoom},         {"qtOnly", p.qtOnly}};
+        plan["focus"] = p.focus ? nlohmann::json(*p.focus) : nlohmann::json();
         return nlohmann::json{{"title", st.title}, {"caption", st.caption}, {"page", st.page},
-                              {"tour", tour.title}, {"stops", tour.stops.size()}, {"settings", settings}}.dump();
+                              {"tour", tour.title}, {"stops", tour.stops.size()}, {"plan", plan}}.dump();
     } catch (const std::exception& e) {
         return nlohmann::json{{"error", e.what()}}.dump();
     }
@@ -140,9 +149,9 @@ public:
     /// Never throws: a scene or a choice that cannot be used leaves error() saying why (a
     /// C++ exception reaches JavaScript as a bare number, not as its message).
     WebRender(const std::string& scene, int width, int height, const std::string& cache, const std::string& order,
-              const std::string& accel) {
+              const std::string& accel, int band) {
         try {
-            open(scene, width, height, cache, order, accel);
+            open(scene, width, height, cache, order, accel, band);
         } catch (const std::bad_alloc&) {
             error_ = "out of memory: the image is too large for this tab";
         } catch (const std::exception& e) {
@@ -154,7 +163,7 @@ public:
 
 private:
     void open(const std::string& scene, int width, int height, const std::string& cache, const std::string& order,
-              const std::string& accel) {
+              const std::string& accel, int band) {
         SessionConfig config;
         config.scene = std::make_shared<const Scene>(loadScene(scene, 1986));
         RenderOptions& o = config.options;
@@ -170,6 +179,8 @@ private:
         o.cache = named(parseCacheKind(cache), "cache", cache, registryListing("caches"));
         o.order = named(parseOrderKind(order), "order", order, registryListing("orders"));
         o.accel = named(parseAccelKind(accel), "search", accel, registryListing("searches"));
+        if (band > NffLimits::maxResolution) throw std::invalid_argument("band " + std::to_string(band) + " is too large");
+        o.band = band < 0 ? kAutoBand : band;
         // The page has no Step back: one checkpoint, at step 0
         config.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
         state_ = std::make_unique<SessionState>(std::move(config));
@@ -244,26 +255,75 @@ public:
         rgb_ = state_->session().image().rgb8();
         return val(emscripten::typed_memory_view(rgb_.size(), rgb_.data()));
     }
-    /// Intersection tests made for each pixel so far.
-    val heat() {
-        const TraceRecorder& rec = state_->recorder();
-        heat_.resize(std::size_t(width()) * std::size_t(height()));
-        for (std::size_t i = 0; i < heat_.size(); ++i) heat_[i] = std::uint32_t(rec.testsAt(int(i)));
-        return val(emscripten::typed_memory_view(heat_.size(), heat_.data()));
+    /// The top of this render's tests heatmap (rc::testsTop); two renders side by side
+    /// share the larger.
+    double heatTop() const { return testsTop(state_->recorder()); }
+
+    /// The picture the page draws at image size, 8-bit RGBA (a view into memory the next
+    /// call may move): the image, or the tests heatmap up to `top` (rc::testsHeatmapRgba);
+    /// then the fill's regions (rc::regionLayer: the one being filled tinted, finished ones
+    /// edged) and the misses at the path in focus (rc::missLayer), by reason.
+    val picture(bool heatmap, double top, bool misses, bool regions) {
+        const int n = width() * height();
+        if (heatmap) {
+            rgba_ = testsHeatmapRgba(state_->recorder(), top);
+        } else {
+            const std::vector<std::uint8_t> rgb = state_->session().image().rgb8();
+            rgba_.assign(std::size_t(n) * 4, 255);
+            for (int i = 0; i < n; ++i)
+                for (int k = 0; k < 3; ++k) rgba_[std::size_t(i) * 4 + k] = rgb[std::size_t(i) * 3 + k];
+        }
+        const auto blend = [this](std::size_t i, Rgb c, double a) {
+            std::uint8_t* d = &rgba_[i * 4];
+            const std::uint8_t to[3] = {c.r, c.g, c.b};
+            for (int k = 0; k < 3; ++k) d[k] = std::uint8_t(std::lround(d[k] + (to[k] - d[k]) * a));
+        };
+        if (regions) {
+            const std::vector<std::uint8_t> r = regionLayer(*state_);
+            for (std::size_t i = 0; i < r.size(); ++i) {
+                if (r[i] == 1) blend(i, colours::kRegion, 120.0 / 255);
+                else if (r[i] == 2) blend(i, colours::kRegionEdge, 220.0 / 255);
+            }
+        }
+        if (misses) {
+            const auto f = RayFocus::of(*state_, selection_);
+            const std::vector<std::uint8_t> m = missLayer(*state_, f ? f->node : 0);
+            for (std::size_t i = 0; i < m.size(); ++i)
+                if (m[i]) blend(i, missReasonColour(MissReason(m[i])), 1.0);
+        }
+        return val(emscripten::typed_memory_view(rgba_.size(), rgba_.data()));
     }
-    /// The miss markers: each pixel's miss reason at the path of the ray in focus
-    /// (rc::missLayer; 0: none; see missReasonNames).
-    val missReasons() {
-        const auto f = RayFocus::of(*state_, selection_);
-        misses_ = missLayer(*state_, f ? f->node : 0);
-        return val(emscripten::typed_memory_view(misses_.size(), misses_.data()));
+
+    /// Applies stop `stop` of tour `tour` (under /tours) to this render, freshly opened with
+    /// the stop's settings (rc::applyStopRays): its steps, its run to a miss, its selection.
+    /// As JSON: {notes: [...], selected: {x, y, path} or null (the pixel and path chosen by
+    /// the stop's select, which a compared render selects too)}.
+    std::string applyStop(const std::string& tour, int stop) {
+        try {
+            const StopPlan plan = planOf(pageTour(tour), stop);
+            const StopApplied applied = applyStopRays(*state_, plan);
+            selection_ = applied.selection;
+            nlohmann::json selected;
+            if (plan.select && applied.notes.empty())
+                selected = {{"x", plan.select->x}, {"y", plan.select->y}, {"path", plan.select->path}};
+            return nlohmann::json{{"notes", applied.notes}, {"selected", selected}}.dump();
+        } catch (const std::exception& e) {
+            return nlohmann::json{{"notes", {std::string("the stop: ") + e.what()}}, {"selected", nullptr}}.dump();
+        }
     }
-    /// The breadth-first regions (rc::regionLayer: 1 the region being filled, 2 the edge
-    /// of a finished one).
-    val regions() {
-        regions_ = regionLayer(*state_);
-        return val(emscripten::typed_memory_view(regions_.size(), regions_.data()));
+
+    /// The claims of stop `stop` of tour `tour` checked on what this render (and `right`, when
+    /// the stop compares) draws, by the core's claim evaluation (rc::checkClaim) and its
+    /// caption checked for what the stop does not draw (rc::captionSlips). `claims` (JSON,
+    /// an array of texts) replaces the stop's own when not empty. As JSON: {results: [{text,
+    /// holds, reading}], slips: [...], error}.
+    std::string claims(const std::string& tour, int stop, const std::string& claims) const {
+        return claimsOf(tour, stop, claims, nullptr);
     }
+    std::string claimsCompared(const std::string& tour, int stop, const std::string& claims, const WebRender& right) const {
+        return claimsOf(tour, stop, claims, &right);
+    }
+
     /// The fill's queued pixels and deferred seeds, its path and region.
     val frontier() const {
         const FrontierView f = state_->session().order().frontier();
@@ -383,11 +443,34 @@ public:
     }
 
 private:
+    std::string claimsOf(const std::string& tourName, int stop, const std::string& replaced, const WebRender* right) const {
+        try {
+            Tour tour = pageTour(tourName);
+            (void)planOf(tour, stop);  // the stop exists
+            TourStop& st = tour.stops[std::size_t(stop - 1)];
+            const nlohmann::json given = nlohmann::json::parse(replaced.empty() ? "[]" : replaced);
+            if (!given.empty()) st.claims = given.get<std::vector<std::string>>();
+            std::vector<Claim> parsed;
+            if (const std::string error = parseStopClaims(st, parsed); !error.empty())
+                return nlohmann::json{{"error", error}}.dump();
+            ClaimView view = claimViewOf(st);
+            view.panes.push_back({state_.get(), selection_});
+            if (right) view.panes.push_back({right->state_.get(), right->selection_});
+            nlohmann::json results = nlohmann::json::array();
+            for (const Claim& c : parsed) {
+                const ClaimResult r = checkClaim(c, view);
+                results.push_back({{"text", r.text}, {"holds", r.holds}, {"reading", r.reading}});
+            }
+            return nlohmann::json{{"results", results}, {"slips", captionSlips(st.caption, parsed, view)}}.dump();
+        } catch (const std::exception& e) {
+            return nlohmann::json{{"error", e.what()}}.dump();
+        }
+    }
+
     std::unique_ptr<SessionState> state_;
     std::unique_ptr<ImageProjector> projector_;
     Selection selection_;
-    std::vector<std::uint8_t> rgb_, misses_, regions_;
-    std::vector<std::uint32_t> heat_;
+    std::vector<std::uint8_t> rgb_, rgba_;
     std::string error_;
     std::vector<OverlayShape> drawn_;  ///< the shapes the last shapes() gave
 };
@@ -415,7 +498,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
     function("palette", &palette);
     constant("maxSize", kMaxWebSize);
     class_<WebRender>("Render")
-        .constructor<std::string, int, int, std::string, std::string, std::string>()
+        .constructor<std::string, int, int, std::string, std::string, std::string, int>()
         .function("error", &WebRender::error)
         .function("width", &WebRender::width)
         .function("height", &WebRender::height)
@@ -430,9 +513,11 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("clearSelection", &WebRender::clearSelection)
         .function("selectedPixel", &WebRender::selectedPixel)
         .function("image", &WebRender::image)
-        .function("heat", &WebRender::heat)
-        .function("missReasons", &WebRender::missReasons)
-        .function("regions", &WebRender::regions)
+        .function("heatTop", &WebRender::heatTop)
+        .function("picture", &WebRender::picture)
+        .function("applyStop", &WebRender::applyStop)
+        .function("claims", &WebRender::claims)
+        .function("claimsCompared", &WebRender::claimsCompared)
         .function("frontier", &WebRender::frontier)
         .function("shapes", &WebRender::shapes)
         .function("legend", &WebRender::legend)

@@ -9,18 +9,19 @@ function renderWorkerMain(self, RayCache) {
   let running = null;  // 'play' or 'end' while a run goes on
   let runStart = 0;    // when the run to the end was asked for (performance.now())
   let selected = null; // the pixel (and path) selected in both renders: {x, y, path}
-  // What the page shows: which overlays, and the image rectangle they are clipped to
-  let view = { cylinder: false, hull: false, frontier: false, misses: false, clip: null };
+  // What the page shows: which overlays, the heatmap, and the image rectangle they are clipped to
+  let view = { cylinder: false, hull: false, frontier: false, misses: false, heatmap: false, clip: null };
 
   let compare = null;   // a second render beside the first (another cache and order), in lockstep
 
-  // What the page draws of one render
-  function picture(r, buffers) {
-    const image = r.image().slice();
-    const heat = r.heat().slice();
-    const misses = view.misses ? r.missReasons().slice() : new Uint8Array(0);
-    const regions = view.frontier ? r.regions().slice() : new Uint8Array(0);
-    buffers.push(image.buffer, heat.buffer, misses.buffer, regions.buffer);
+  // What the page draws of one render: its picture at image size, made by the core (the
+  // image or the heatmap up to `top`, regions, misses), and the shapes and key of the ray
+  // in focus. The image's bytes only once it is complete, for its hash.
+  function picture(r, buffers, top) {
+    const layer = new Uint8ClampedArray(r.picture(view.heatmap, top, view.misses, view.frontier));
+    const image = r.done() ? r.image().slice() : null;
+    buffers.push(layer.buffer);
+    if (image) buffers.push(image.buffer);
     const w = r.width(), h = r.height();
     const c = view.clip || [0, 0, w, h];
     // The margin keeps cut edges off the picture (as the Qt GUI's)
@@ -28,7 +29,7 @@ function renderWorkerMain(self, RayCache) {
     const shapes = view.cylinder || view.hull
       ? r.shapes(view.cylinder, view.hull, c[0] - mx, c[1] - my, c[2] + mx, c[3] + my) : [];
     return {
-      width: w, height: h, image, heat, misses, regions, shapes,
+      width: w, height: h, layer, image, heatTop: top, shapes,
       frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
       keys: JSON.parse(r.keys(view.cylinder, view.hull, view.frontier, view.misses)),
       statistics: JSON.parse(r.statistics()), caption: r.caption(),
@@ -49,11 +50,14 @@ function renderWorkerMain(self, RayCache) {
   function frame(extra) {
     const buffers = [];
     syncCompare();
-    const first = picture(render, buffers);
-    const second = compare ? picture(compare, buffers) : null;
+    // One heatmap scale for both renders side by side
+    const top = view.heatmap ? Math.max(render.heatTop(), compare ? compare.heatTop() : 1) : 1;
+    const first = picture(render, buffers, top);
+    const second = compare ? picture(compare, buffers, top) : null;
     if (second) second.compareCaption = render.compareCaption(compare);
     self.postMessage(Object.assign({ type: 'frame' }, first, {
       compare: second, progress: render.progress(), running,
+      heapBytes: module.HEAP8.length,  // the WebAssembly memory, for tests/web/page_memory.py
     }, extra || {}), buffers);
   }
 
@@ -77,25 +81,57 @@ function renderWorkerMain(self, RayCache) {
     setTimeout(tick, running === 'play' ? 16 : 0);
   }
 
-  // A tour stop's rays: its steps, then on to the miss it shows, then its selection
+  // A tour stop's rays (rc::applyStopRays): its steps, its run to a miss, its selection
   function goToStop(m) {
-    const notes = [];
-    if (m.steps > 0) render.runToStep(m.steps);
-    if (m.run === 'next-miss') {
-      if (!render.runUntil('miss', m.missReason || '')) notes.push('no such miss before the end');
-    } else if (m.run) {
-      notes.push('run ' + m.run + ': not in the web viewer');
+    const applied = JSON.parse(render.applyStop(m.tour, m.stop));
+    selected = applied.selected;
+    syncCompare();
+    return applied.notes;
+  }
+
+  // The stop's claims, checked by the core on what the page draws (rc::checkClaim)
+  function claims(m) {
+    if (!render) return { error: 'no picture' };
+    const given = JSON.stringify(m.claims || []);
+    return JSON.parse(compare ? render.claimsCompared(m.tour, m.stop, given, compare)
+                              : render.claims(m.tour, m.stop, given));
+  }
+
+  // A new render (and the compared one) of the scene, size and choices the page asks for,
+  // on to the tour stop's rays when it shows one
+  function openRender(m) {
+    running = null;
+    selected = null;
+    if (m.view) view = m.view;
+    if (render) { render.delete(); render = null; }
+    if (compare) { compare.delete(); compare = null; }
+    let spec = m.scene;
+    if (m.nff !== undefined) spec = module.storeSceneFile(m.name || 'dropped.nff', m.nff);
+    const error = module.checkScene(spec);
+    if (error) { self.postMessage({ type: 'error', message: error }); return; }
+    let notes = [];
+    // A render that cannot be made says why in its error() (the bindings catch C++'s
+    // exceptions, which would reach here as bare numbers)
+    const make = (cache, order) => {
+      const r = new module.Render(spec, m.width | 0, m.height | 0, cache, order, m.accel,
+                                 m.band === undefined ? -1 : m.band | 0);
+      const why = r.error();
+      if (!why) return r;
+      r.delete();
+      throw new Error(why);
+    };
+    try {
+      render = make(m.cache, m.order);
+      if (m.compare) compare = make(m.compare.cache, m.compare.order);
+      // The reader's warnings (a polygon of zero area, skipped), named as the CLI names them
+      notes = render.warnings().split('\n').filter(Boolean).map((w) => 'warning: ' + w);
+      if (m.stop) notes = notes.concat(goToStop(m.stop));
+    } catch (e) {
+      if (render) { render.delete(); render = null; }
+      self.postMessage({ type: 'error', message: e instanceof Error ? e.message : 'the render failed (' + e + ')' });
+      return;
     }
-    if (m.showcase) render.showcase();
-    if (m.select) {
-      const [xy, path] = m.select.split(':');
-      const [x, y] = xy.split(',').map(Number);
-      const why = render.select(x, y, path || '');
-      if (why) notes.push('select: ' + why);
-      else selected = { x, y, path: path || '' };
-      syncCompare();
-    }
-    return notes;
+    frame({ opened: true, notes });
   }
 
   self.onmessage = (event) => {
@@ -103,40 +139,12 @@ function renderWorkerMain(self, RayCache) {
     if (m.type === 'view') {
       view = m.view;
       if (render) frame();
+    } else if (m.type === 'claims') {
+      self.postMessage(Object.assign({ type: 'claims' }, claims(m)));
     } else if (m.type === 'tour') {
       self.postMessage({ type: 'tour', stop: JSON.parse(module.tourStop(m.tour, m.stop | 0)) });
     } else if (m.type === 'open') {
-      running = null;
-      selected = null;
-      if (m.view) view = m.view;
-      if (render) { render.delete(); render = null; }
-      if (compare) { compare.delete(); compare = null; }
-      let spec = m.scene;
-      if (m.nff !== undefined) spec = module.storeSceneFile(m.name || 'dropped.nff', m.nff);
-      const error = module.checkScene(spec);
-      if (error) { self.postMessage({ type: 'error', message: error }); return; }
-      let notes = [];
-      // A render that cannot be made says why in its error() (the bindings catch C++'s
-      // exceptions, which would reach here as bare numbers)
-      const make = (cache, order) => {
-        const r = new module.Render(spec, m.width | 0, m.height | 0, cache, order, m.accel);
-        const why = r.error();
-        if (!why) return r;
-        r.delete();
-        throw new Error(why);
-      };
-      try {
-        render = make(m.cache, m.order);
-        if (m.compare) compare = make(m.compare.cache, m.compare.order);
-        // The reader's warnings (a polygon of zero area, skipped), named as the CLI names them
-        notes = render.warnings().split('\n').filter(Boolean).map((w) => 'warning: ' + w);
-        if (m.stop) notes = notes.concat(goToStop(m.stop));
-      } catch (e) {
-        if (render) { render.delete(); render = null; }
-        self.postMessage({ type: 'error', message: e instanceof Error ? e.message : 'the render failed (' + e + ')' });
-        return;
-      }
-      frame({ opened: true, notes });
+      openRender(m);
     } else if (!render) {
       // A bad file left no picture: say so rather than do nothing
       if (['ray', 'pixel', 'miss', 'select', 'play', 'end'].includes(m.type))

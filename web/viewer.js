@@ -20,15 +20,13 @@
   if (params.get('embed') === '1') document.body.classList.add('embed');
 
   // The colours, role styles and heatmap ramp are the core's (view/palette.h, which the Qt
-  // GUI draws with too), sent by the worker when the web edition has loaded (usePalette)
-  let kRay, kCylinder, kHull, kTarget, kBlocker, kQueued, kDeferred, kRegion, kRegionEdge, kSelection, kMissCause;
-  let kMissColours = [], kRoleStyles = {}, kRamp = [[0, 0, 0]];
+  // GUI draws with too), sent by the worker when the web edition has loaded (usePalette); the
+  // picture's own colours (heatmap, regions, misses) the core sets in it
+  let kRay, kQueued, kDeferred, kSelection;
+  let kRoleStyles = {}, kRamp = [[0, 0, 0]];
   function usePalette(p) {
     const c = p.colours;
-    [kRay, kCylinder, kHull, kTarget, kBlocker, kQueued, kDeferred, kRegion, kRegionEdge, kSelection, kMissCause] =
-      [c.ray, c.cylinder, c.hull, c.target, c.blocker, c.queued, c.deferred, c.region, c.regionEdge, c.selection,
-       c.missCause];
-    kMissColours = p.misses;
+    [kRay, kQueued, kDeferred, kSelection] = [c.ray, c.queued, c.deferred, c.selection];
     kRoleStyles = p.roles;
     kRamp = p.ramp;
   }
@@ -62,10 +60,12 @@
 
   function overlayChoice() {
     return { cylinder: $('ov-cylinder').checked, hull: $('ov-hull').checked, frontier: $('ov-frontier').checked,
-             misses: $('ov-misses').checked, clip: viewRect };
+             misses: $('ov-misses').checked, heatmap: $('heatmap').checked, clip: viewRect };
   }
 
-  function open(stopRays) {
+  // `atStop`: the tour stop whose rays the render goes on to ({tour, stop}; its settings are in
+  // the controls), else nothing
+  function open(atStop) {
     const width = +$('width').value, height = +$('height').value;
     // The size limit, said before anything is traced (the bindings check it too)
     for (const [name, v] of [['width', width], ['height', height]])
@@ -75,7 +75,8 @@
         return;
       }
     const m = { type: 'open', width, height, cache: $('cache').value, order: $('order').value,
-                accel: $('accel').value, view: overlayChoice(), stop: stopRays || null, compare: null };
+                accel: $('accel').value, band: atStop ? stop.plan.band : -1, view: overlayChoice(),
+                stop: atStop || null, compare: null };
     const [compareCache, compareOrder] = $('compare').value.split(':');
     if (compareCache && compareOrder) m.compare = { cache: compareCache, order: compareOrder };
     if ($('scene').value === 'dropped' && dropped) { m.nff = dropped.text; m.name = dropped.name; }
@@ -85,7 +86,7 @@
     $('timing').textContent = '';
     $('caption').className = '';
     $('caption').textContent = 'tracing…';
-    if (!stopRays) { viewRect = null; zoomAbout = 0; }
+    if (!atStop) { viewRect = null; zoomAbout = 0; }
     worker.postMessage(m);
   }
 
@@ -93,7 +94,6 @@
     if (m.type === 'loaded') {
       maxSize = m.maxSize;
       for (const id of ['width', 'height']) $(id).max = maxSize;
-      kMissNames = m.missReasons;
       usePalette(m.palette);
       fillChoices(m.registry);
       fillScenes(m.scenes);
@@ -114,6 +114,8 @@
       if (m.stop.error) { showError(m.stop.error); return; }
       stop = m.stop;
       applyStop();
+    } else if (m.type === 'claims') {
+      window.__claims = m;
     } else if (m.type === 'error') {
       showError(m.message);
     } else if (m.type === 'frame') {
@@ -130,14 +132,13 @@
       if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
       if (m.runMs !== undefined && m.runMs !== null)
         $('timing').textContent = 'ran to the end in ' + m.runMs.toFixed(1) + ' ms';
-      if (m.done) writeHash(m.image);
+      if (m.done && m.image) writeHash(m.image);
     }
   }
 
-  // ---- A tour stop: its settings as the Qt GUI reads them (ui/gui_options.cpp) -------------
+  // ---- A tour stop: its settings as the core plans them (rc::planOf), set in the controls
   let stopNotes = '';
-  function applyStop() {
-    const s = new Map(stop.settings);
+  function showStopTitle() {
     $('stop').hidden = false;
     $('stop-caption').textContent = stop.caption;
     $('as-written').hidden = false;
@@ -147,51 +148,36 @@
     $('stop-title').textContent = k + '/' + stop.stops + '  ' + stop.title + '.';
     const full = new URLSearchParams({ tour: params.get('tour'), stop: params.get('stop') || '1' });
     $('full').href = '?' + full.toString();
-    const scene = s.get('scene') || 'cube:4';
-    if (![...$('scene').options].some((o) => o.value === scene)) addSceneOption(scene, scene);
-    $('scene').value = scene;
-    $('width').value = s.get('width') || 0;
-    $('height').value = s.get('height') || 0;
-    $('cache').value = s.get('cache') || 'blocker';
-    $('order').value = s.get('order') || 'bfs';
-    $('accel').value = s.get('accel') || 'linear';
-    const overlays = (s.get('overlays') || '').split(',').map(overlayName);
-    const has = (w) => overlays.includes(w) || overlays.includes('all');
-    $('ov-cylinder').checked = has('cylinder');
-    $('ov-hull').checked = has('hull');
-    $('ov-frontier').checked = has('frontier');
-    $('ov-misses').checked = has('misses');
-    $('heatmap').checked = s.get('heatmap') === 'tests';
-    const compare = s.get('compare') || '';
-    if (compare && ![...$('compare').options].some((o) => o.value === compare)) {
+  }
+  // A choice a menu does not list yet (a scene file, a compare pair) is added to it
+  function choose(id, value) {
+    if (![...$(id).options].some((o) => o.value === value)) {
       const o = document.createElement('option');
-      o.value = o.textContent = compare;
-      $('compare').appendChild(o);
+      o.value = o.textContent = value;
+      $(id).appendChild(o);
     }
-    $('compare').value = compare;
+    $(id).value = value;
+  }
+  function applyStop() {
+    const p = stop.plan;
+    showStopTitle();
+    // The page carries the tours' scenes under /scenes: the menu names them scenes/NAME.nff
+    choose('scene', p.scene.startsWith('/scenes/') ? p.scene.slice(1) : p.scene);
+    $('width').value = p.width;
+    $('height').value = p.height;
+    $('cache').value = p.cache;
+    $('order').value = p.order;
+    $('accel').value = p.accel;
+    for (const o of ['cylinder', 'hull', 'frontier', 'misses']) $('ov-' + o).checked = p.overlays.includes(o);
+    $('heatmap').checked = p.heatmap === 'tests';
+    choose('compare', p.compare);
     // What the web viewer leaves to the Qt GUI, said rather than dropped
-    const left = [];
-    if (s.has('scene-view')) left.push('the scene view (' + (s.get('scene-view') || 'side') + ')');
-    if (s.has('panels')) left.push('the panels (' + s.get('panels') + ')');
-    if (s.has('heatmap') && s.get('heatmap') !== 'tests') left.push('the ' + s.get('heatmap') + ' heatmap');
-    for (const k of ['spp', 'light-radius', 'shadow-samples', 'gloss', 'gloss-samples', 'orbit'])
-      if (s.has(k)) left.push('--' + k);
-    if (overlays.includes('samples')) left.push('the sample rays');
-    stopNotes = left.length ? 'The Qt GUI (raycache-gui --tour tours/' + params.get('tour') + '.json --stop ' +
-      (params.get('stop') || 1) + ') also shows ' + left.join(', ') + '.' : '';
+    stopNotes = p.qtOnly.length ? 'The Qt GUI (raycache-gui --tour tours/' + params.get('tour') + '.json --stop ' +
+      (params.get('stop') || 1) + ') also shows ' + p.qtOnly.join(', ') + '.' : '';
     $('stop-notes').textContent = stopNotes;
-    viewRect = null;
-    zoomAbout = 0;
-    if (s.has('focus')) {
-      const v = s.get('focus').split(',').map(Number);
-      if (v.length === 4 && v[0] < v[2] && v[1] < v[3]) viewRect = v;
-    } else if (+s.get('zoom') > 1) {
-      zoomAbout = +s.get('zoom');
-    }
-    open({ steps: +(s.get('steps') || 0), run: s.get('run') || '', missReason: s.get('miss-reason') || '',
-           select: s.get('select') || '',
-           // The Qt GUI's rule: a scene view with no ray chosen shows a ray worth seeing
-           showcase: s.has('scene-view') && !s.has('select') && !s.has('run') });
+    viewRect = p.focus;
+    zoomAbout = p.focus ? 0 : (p.zoom > 1 ? p.zoom : 0);
+    open({ tour: params.get('tour'), stop: +(params.get('stop') || 1) });
   }
 
   // A stop's zoom: the image rectangle `zoomAbout` times smaller, about the pixel in focus
@@ -238,16 +224,7 @@
       }
       $(key).value = wanted;
     }
-    kOverlays = registry.overlays;
   }
-  // The overlays' names and aliases (rc::overlayRegistry), as the Qt GUI reads them
-  let kOverlays = [];
-  const overlayName = (word) => {
-    const w = word.trim().toLowerCase();
-    const o = kOverlays.find((e) => e.name === w || e.aliases.includes(w));
-    return o ? o.name : w;
-  };
-
   function addSceneOption(value, text) {
     const o = document.createElement('option');
     o.value = value;
@@ -267,38 +244,11 @@
   }
 
   // ---- Drawing ---------------------------------------------------------------------------
-  // The heatmaps' ramp (rc::heatRamp), sampled by the core
-  function ramp(t) {
-    return kRamp[Math.round(Math.min(1, Math.max(0, t)) * (kRamp.length - 1))];
-  }
-
-  // The picture at image size: the image or the heatmap (on the scale `most`, shared by
-  // two renders side by side), the regions of the fill, the misses
-  function paintLayer(m, most) {
+  // The picture at image size, as the core made it (the image or the heatmap, the regions
+  // of the fill, the misses)
+  function paintLayer(m) {
     if (layer.width !== m.width || layer.height !== m.height) { layer.width = m.width; layer.height = m.height; }
-    const out = layerContext.createImageData(m.width, m.height);
-    const d = out.data, n = m.width * m.height;
-    if ($('heatmap').checked) {
-      // Intersection tests per pixel, on a log scale
-      const scale = 1 / Math.log1p(most);
-      for (let i = 0; i < n; ++i) {
-        const c = ramp(Math.log1p(m.heat[i]) * scale);
-        d[4 * i] = c[0]; d[4 * i + 1] = c[1]; d[4 * i + 2] = c[2]; d[4 * i + 3] = 255;
-      }
-    } else {
-      for (let i = 0; i < n; ++i) {
-        d[4 * i] = m.image[3 * i]; d[4 * i + 1] = m.image[3 * i + 1]; d[4 * i + 2] = m.image[3 * i + 2]; d[4 * i + 3] = 255;
-      }
-    }
-    const blend = (i, c, a) => { for (let k = 0; k < 3; ++k) d[4 * i + k] += (c[k] - d[4 * i + k]) * a; };
-    // The fill's regions (rc::regionLayer): the one being filled tinted, finished ones edged
-    for (let i = 0; i < m.regions.length; ++i) {
-      if (m.regions[i] === 1) blend(i, kRegion, 120 / 255);
-      else if (m.regions[i] === 2) blend(i, kRegionEdge, 220 / 255);
-    }
-    // Misses at the path in focus (rc::missLayer), by reason
-    for (let i = 0; i < m.misses.length; ++i) if (m.misses[i] && kMissColours[m.misses[i]]) blend(i, kMissColours[m.misses[i]], 1);
-    layerContext.putImageData(out, 0, 0);
+    layerContext.putImageData(new ImageData(m.layer, m.width, m.height), 0, 0);
   }
 
   let drawnShapes = 0;
@@ -319,8 +269,6 @@
     context.setTransform(1, 0, 0, 1, 0, 0);
     context.fillStyle = panes.length > 1 ? '#fff' : '#000';
     context.fillRect(0, 0, W, H);
-    let most = 1;
-    for (const p of panes) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
     drawnShapes = 0;
     drawnRoles.clear();
     panes.forEach((p, k) => {
@@ -333,7 +281,7 @@
       context.fillRect(left, 0, paneWidth, H);
       const scale = paneWidth / (v[2] - v[0]);
       context.setTransform(scale, 0, 0, scale, left - v[0] * scale, -v[1] * scale);
-      drawPane(p, most, dpr / scale);
+      drawPane(p, dpr / scale);
       context.restore();
     });
     $('overlay-count').textContent = drawnShapes;
@@ -341,8 +289,8 @@
   }
 
   // One render, in image coordinates; `px` is one CSS pixel in image units
-  function drawPane(m, most, px) {
-    paintLayer(m, most);
+  function drawPane(m, px) {
+    paintLayer(m);
     context.imageSmoothingEnabled = false;
     context.drawImage(layer, 0, 0);
     for (const shape of m.shapes) {
@@ -470,9 +418,7 @@
   function showKey(m) {
     const keys = m.keys.map((k) => [k.colour, k.text]);
     if ($('heatmap').checked) {
-      let most = 0;
-      for (const p of m.compare ? [m, m.compare] : [m]) for (let i = 0; i < p.heat.length; ++i) most = Math.max(most, p.heat[i]);
-      keys.push([ramp(1), 'heatmap: intersection tests per pixel, log scale, 0 to ' + most +
+      keys.push([kRamp[kRamp.length - 1], 'heatmap: intersection tests per pixel, log scale, 0 to ' + m.heatTop +
                  (m.compare ? ', one scale for both' : '')]);
     }
     $('key').innerHTML = '';
@@ -487,7 +433,6 @@
       $('key').appendChild(li);
     }
   }
-  let kMissNames = [];
 
   function showStatistics(...renders) {
     const rows = [['rays', 'rays'], ['eye rays', 'primary'], ['shadow rays', 'shadow'],
@@ -539,7 +484,7 @@
   $('end').onclick = () => worker.postMessage({ type: 'end' });
   for (const id of ['ov-cylinder', 'ov-hull', 'ov-frontier', 'ov-misses'])
     $(id).onchange = () => worker.postMessage({ type: 'view', view: overlayChoice() });
-  $('heatmap').onchange = draw;
+  $('heatmap').onchange = () => worker.postMessage({ type: 'view', view: overlayChoice() });
   window.addEventListener('resize', draw);
 
   // A click puts the pixel's eye ray in focus
@@ -576,7 +521,15 @@
   };
 
   // For the browser tests (tests/web): the last frame the worker sent
-  window.__viewer = { frame: () => last };
+  // and the shown stop's claims checked by the core on what is drawn (`claims`, a list of
+  // texts, replaces the stop's own), the answer in window.__claims
+  window.__viewer = {
+    frame: () => last,
+    claims: (claims) => {
+      window.__claims = null;
+      worker.postMessage({ type: 'claims', tour: params.get('tour'), stop: +(params.get('stop') || 1), claims });
+    },
+  };
 
   startWorker();
 })();

@@ -1,12 +1,18 @@
 #!/usr/bin/env python3
 """Measures the page's memory against native's for one render run to the end: the page in
-headless Chromium (the resident memory of its renderer processes, which hold the page and its
-worker, after the run; and the worker's WebAssembly heap) and the Qt GUI rendering the same
-headless to a screenshot (its peak resident memory, /usr/bin/time's). Prints the figures; a
-measurement, not a test.
+headless Chromium, the Qt GUI rendering the same headless to a screenshot (its peak resident
+memory, /usr/bin/time's) and, with --cli, `raycache render` (the same). The page's figures,
+after the run:
+- all: the resident memory of every renderer process of the browser (the page's, the blank
+  page it started from, the spare one), Chromium's shared code counted once per process;
+- own: the anonymous resident memory (RssAnon) of the page's renderer, the one holding the
+  page and its worker: what the page itself holds, without the file-backed code pages;
+- heap: the worker's WebAssembly memory (the core's heap; it never shrinks).
+With --limit R and --cli, exits 1 when the page's own memory is over R times the CLI's.
 
 Usage: page_memory.py --page build/web-edition/web/index.html --gui build/ui/raycache-gui
-           [--cli build/src/raycache] [--scene cube:4 --sizes 1024,2048 --cache blocker+ --order bfs]"""
+           [--cli build/src/raycache] [--scene cube:4 --sizes 1024,2048 --cache blocker+ --order bfs]
+           [--limit 3]"""
 import argparse
 import os
 import pathlib
@@ -21,10 +27,11 @@ from browser import Browser  # noqa: E402
 HASH = "document.getElementById('image-hash').textContent"
 
 
-def renderer_rss_mb(browser):
+def renderer_memory_mb(browser):
     """The resident memory of this browser's renderer processes (found by its profile folder:
-    Chromium starts them through its zygote, not as the browser's own children)."""
-    total = 0
+    Chromium starts them through its zygote, not as the browser's own children): all of it,
+    and the largest one's anonymous memory (the page's renderer)."""
+    total = own = 0
     profile = ("--user-data-dir=" + browser.profile.name).encode()
     for entry in pathlib.Path("/proc").iterdir():
         if not entry.name.isdigit():
@@ -36,17 +43,21 @@ def renderer_rss_mb(browser):
             continue
         if b"--type=renderer" in cmd and profile in cmd:
             total += int(re.search(r"VmRSS:\s+(\d+) kB", status).group(1))
-    return total / 1024
+            own = max(own, int(re.search(r"RssAnon:\s+(\d+) kB", status).group(1)))
+    return total / 1024, own / 1024
 
 
 def page(a, size):
+    """{all, own, heap} in MB, or None when the run did not end."""
     browser = Browser(a.chromium)
     try:
         query = f"scene={a.scene}&width={size}&height={size}&cache={a.cache}&order={a.order}&run=end"
         browser.open(pathlib.Path(a.page).resolve().as_uri() + "?" + query)
         if not browser.wait_for(HASH, a.timeout):
             return None
-        return renderer_rss_mb(browser)
+        total, own = renderer_memory_mb(browser)
+        heap = browser.evaluate("window.__viewer.frame().heapBytes") or 0
+        return {"all": total, "own": own, "heap": heap / 2 ** 20}
     finally:
         browser.close()
 
@@ -81,15 +92,26 @@ def main():
     p.add_argument("--cache", default="blocker+")
     p.add_argument("--order", default="bfs")
     p.add_argument("--timeout", type=float, default=900.0)
+    p.add_argument("--limit", type=float, help="with --cli: exit 1 when the page's own memory is over this many "
+                                                 "times raycache render's")
     a = p.parse_args()
+    over = False
     for size in [int(s) for s in a.sizes.split(",")]:
-        web, nat = page(a, size), native(a, size)
-        ratio = f"{web / nat:.1f}x" if web and nat else "-"
-        cli = f", raycache render {round(cli_rss_mb(a, size))} MB" if a.cli else ""
-        print(f"{a.scene} {size}x{size} {a.cache} {a.order}: page {web and round(web)} MB (renderer processes' "
-              f"resident memory after the run), native GUI {nat and round(nat)} MB (peak resident), "
-              f"page/GUI {ratio}{cli}")
-    return 0
+        web, gui = page(a, size), native(a, size)
+        cli = cli_rss_mb(a, size) if a.cli else None
+        mb = lambda v: f"{round(v):,} MB" if v else "-"  # noqa: E731
+        print(f"{a.scene} {size}x{size} {a.cache} {a.order}:")
+        if web:
+            print(f"  page: all renderers {mb(web['all'])}, its own {mb(web['own'])} "
+                  f"(WebAssembly heap {mb(web['heap'])})")
+        print(f"  native GUI {mb(gui)} (peak resident)" + (f", raycache render {mb(cli)}" if cli else ""))
+        if web and cli:
+            ratio = web["own"] / cli
+            print(f"  page's own / raycache render: {ratio:.1f}x" + (f" (limit {a.limit}x)" if a.limit else ""))
+            over |= bool(a.limit) and ratio > a.limit
+        if web and gui:
+            print(f"  page's own / native GUI: {web['own'] / gui:.2f}x")
+    return 1 if over else 0
 
 
 if __name__ == "__main__":

@@ -1,0 +1,125 @@
+// A tour stop applied (view/tour_stop.h): its settings read once into what a viewer sets,
+// and its rays applied to a render, as the web page does through its bindings.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "order/ray_order.h"
+#include "scene/builtin_scenes.h"
+#include "search/cache_strategy.h"
+#include "view/heatmap.h"
+#include "view/palette.h"
+#include "view/ray_focus.h"
+#include "view/tour_stop.h"
+
+namespace {
+
+const rc::Tour kTour = rc::parseTour(R"({"stops": [
+  {"title": "A", "caption": "a.", "scene": "pair", "width": 32, "height": 32, "cache": "blocker+",
+   "order": "progressive", "band": 0, "compare": "blocker:scanline", "overlays": ["cone", "misses"],
+   "heatmap": "tests", "steps": 1500, "select": "16,16:eye", "focus": "4,4,20,20"},
+  {"title": "B", "caption": "b.", "scene": "pair", "width": 32, "height": 32, "cache": "blocker",
+   "order": "scanline", "run": "next-miss", "scene-view": "side", "panels": ["ray-tree"], "spp": 4,
+   "overlays": ["all"]},
+  {"title": "C", "caption": "c.", "scene": "pair", "width": 32, "height": 32, "scene-view": "along", "steps": 2000}
+]})", "/some/where/t.json");
+
+std::unique_ptr<rc::SessionState> stateOf(const rc::StopPlan& p) {
+    rc::SessionConfig c;
+    c.scene = std::make_shared<const rc::Scene>(rc::loadScene(p.scene, 1986));
+    c.options.width = p.width;
+    c.options.height = p.height;
+    c.options.cache = *rc::parseCacheKind(p.cache);
+    c.options.order = *rc::parseOrderKind(p.order);
+    c.options.band = p.band;
+    return std::make_unique<rc::SessionState>(std::move(c));
+}
+
+}  // namespace
+
+TEST_CASE("a stop's settings are read once into what a viewer sets", "[tour][view]") {
+    const rc::StopPlan a = rc::planOf(kTour, 1);
+    REQUIRE(a.scene == "pair");  // a built-in name stays as it is
+    REQUIRE(a.cache == "blocker+");
+    REQUIRE(a.order == "progressive");
+    REQUIRE(a.band == 0);
+    REQUIRE(a.compareCache == "blocker");
+    REQUIRE(a.compareOrder == "scanline");
+    REQUIRE(a.overlays == std::vector<std::string>{"hull", "misses"});  // cone is the hull's alias
+    REQUIRE(a.heatmap == "tests");
+    REQUIRE(a.select);
+    REQUIRE(a.select->x == 16);
+    REQUIRE(a.select->path == "eye");
+    REQUIRE(a.focus == std::vector<double>{4, 4, 20, 20});
+    REQUIRE(a.qtOnly.empty());
+    REQUIRE_FALSE(a.showcase);
+
+    const rc::StopPlan b = rc::planOf(kTour, 2);
+    REQUIRE(b.band == -1);
+    REQUIRE(b.compareCache.empty());
+    REQUIRE(b.run == "next-miss");
+    REQUIRE(b.has("hull"));
+    REQUIRE(b.has("cylinder"));
+    REQUIRE(b.has("frontier"));
+    REQUIRE_FALSE(b.showcase);  // it runs to a miss, which comes in focus
+    REQUIRE(b.qtOnly == std::vector<std::string>{"the scene view (side)", "the panels (ray-tree)", "--spp",
+                                                  "the sample rays"});
+    REQUIRE(rc::planOf(kTour, 3).showcase);
+    REQUIRE_THROWS_AS(rc::planOf(kTour, 4), rc::TourError);
+}
+
+TEST_CASE("a stop's rays are applied: its steps, its run to a miss, its selection", "[tour][view]") {
+    const rc::StopPlan a = rc::planOf(kTour, 1);
+    const auto state = stateOf(a);
+    rc::SessionState& s = *state;
+    const rc::StopApplied applied = rc::applyStopRays(s, a);
+    REQUIRE(s.session().steps() == 1500);
+    REQUIRE(applied.notes.empty());
+    REQUIRE(applied.selection.pixel == 16 * 32 + 16);
+    REQUIRE(applied.selection.event >= 0);
+    REQUIRE(s.recorder().events()[std::size_t(applied.selection.event)].pixel == 16 * 32 + 16);
+
+    const rc::StopPlan b = rc::planOf(kTour, 2);
+    const auto tState = stateOf(b);
+    rc::SessionState& t = *tState;
+    const rc::StopApplied miss = rc::applyStopRays(t, b);
+    REQUIRE(miss.notes.empty());
+    REQUIRE(miss.selection.event == t.stopEvent());
+    const auto f = rc::RayFocus::ofEvent(t, miss.selection.event);
+    REQUIRE(f);
+    REQUIRE(f->decision == rc::Decision::Miss);
+    REQUIRE(miss.selection.pixel == f->pixel);
+
+    rc::StopPlan outside = a;
+    outside.select = rc::StopSelect{40, 3, ""};
+    const auto uState = stateOf(outside);
+    rc::SessionState& u = *uState;
+    const rc::StopApplied refused = rc::applyStopRays(u, outside);
+    REQUIRE(refused.notes.size() == 1);
+    REQUIRE(refused.notes[0].find("outside the 32x32 image") != std::string::npos);
+}
+
+TEST_CASE("the tests heatmap: a log scale to the top, untraced pixels black", "[view][heatmap]") {
+    const rc::StopPlan a = rc::planOf(kTour, 1);
+    const auto state = stateOf(a);
+    rc::SessionState& s = *state;
+    s.runUntil(rc::RunGoal::ToStep, 300);
+    const rc::TraceRecorder& rec = s.recorder();
+    const double top = rc::testsTop(rec);
+    REQUIRE(top >= 1);
+    int traced = -1, untraced = -1;
+    for (int px = 0; px < 32 * 32; ++px) (rec.firstVisit(px) >= 0 ? traced : untraced) = px;
+    REQUIRE(traced >= 0);
+    REQUIRE(untraced >= 0);
+    REQUIRE_FALSE(rc::testsHeat(rec, untraced, top));
+    REQUIRE(*rc::testsHeat(rec, traced, top) == Approx(std::log1p(rec.testsAt(traced)) / std::log1p(top)));
+    const std::vector<std::uint8_t> rgba = rc::testsHeatmapRgba(rec, top);
+    REQUIRE(rgba.size() == 32 * 32 * 4);
+    const rc::Rgb c = rc::heatRamp(*rc::testsHeat(rec, traced, top));
+    REQUIRE(rgba[std::size_t(traced) * 4] == c.r);
+    REQUIRE(rgba[std::size_t(traced) * 4 + 2] == c.b);
+    REQUIRE(rgba[std::size_t(untraced) * 4] == 0);
+    REQUIRE(rgba[std::size_t(untraced) * 4 + 3] == 255);
+}
