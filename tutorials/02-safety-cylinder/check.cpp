@@ -107,8 +107,9 @@ namespace {
 // The gap from the segment a-b to the nearest sphere but `hit`, by the oracle's distance
 double gap(const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a, const rc::Vec3& b) {
     double r = rc::kNoHit;
-    for (int j = 0; j < int(spheres.size()); ++j)
-        if (j != hit) r = std::min(r, segmentGap(spheres[j].c, a, b) - spheres[j].r);
+    int j = 0;
+    for (const rc::Sphere& s : spheres)
+        if (j++ != hit) r = std::min(r, segmentGap(s.c, a, b) - s.r);
     return r;
 }
 }  // namespace
