@@ -153,10 +153,11 @@ FillReport checkFill(int width, int height, int band, const std::vector<int>& ke
     auto endRegion = [&] {
         for (int p : members) {
             const int x = p % width, y = p / width;
-            const int nb[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-            for (const auto& n : nb) {
-                if (n[0] < 0 || n[1] < 0 || n[0] >= width || n[1] >= height) continue;
-                const int q = n[1] * width + n[0];
+            // Left, right, up, down
+            for (int k = 0; k < 4; ++k) {
+                const int nx = x + (k == 0 ? -1 : k == 1 ? 1 : 0), ny = y + (k == 2 ? -1 : k == 3 ? 1 : 0);
+                if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                const int q = ny * width + nx;
                 if (bandOf(q) != currentBand || region[q] >= 0) continue;
                 if (key[q] == cached)
                     fail("the region stopped growing although this neighbour has the seed's key (it must be answered)", q);
