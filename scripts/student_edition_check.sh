@@ -8,7 +8,8 @@
 #     one sentence that it cannot draw before tutorial 01;
 #  3. put the instructor's solutions into the holes: every tutorial says SOLVED, and every
 #     built-in scene renders at 64x48 byte for byte as the main build (MAIN, default
-#     build/src/raycache) renders it, uncached and with the caches that use the holes;
+#     build/src/raycache) renders it, uncached and with the caches that use the holes (and
+#     in breadth-first order, tutorial 04's fill);
 #  4. put each recorded wrong answer of a hole tutorial into its exercise.cpp: NOT YET.
 # Usage: scripts/student_edition_check.sh [MAIN_RAYCACHE] [WORK_DIR]
 set -euo pipefail
@@ -73,6 +74,11 @@ for scene in $scenes; do
     [ "$a" = "$b" ] || { echo "student edition: $scene --cache $cache: $b, main build $a" >&2; exit 1; }
     renders=$((renders + 1))
   done
+  # Breadth-first order runs tutorial 04's fill (with a cache that defers its misses)
+  a=$("$main" render "$scene" --width 64 --height 48 --cache cylinder --order bfs --threads 1 -q --hash)
+  b=$(build/src/raycache render "$scene" --width 64 --height 48 --cache cylinder --order bfs --threads 1 -q --hash)
+  [ "$a" = "$b" ] || { echo "student edition: $scene --cache cylinder --order bfs: $b, main build $a" >&2; exit 1; }
+  renders=$((renders + 1))
 done
 echo "student edition: every tutorial SOLVED with the instructor's solutions; $renders renders equal the main build's"
 

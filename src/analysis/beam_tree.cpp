@@ -143,37 +143,7 @@ std::vector<BeamTreeBuilder::Ray> BeamTreeBuilder::byPixel(const PathLog& rays) 
     return sorted;
 }
 
-int BeamTreeBuilder::labelBeams(const std::vector<Ray>& rays, std::vector<int>& index, std::vector<int>& label) const {
-    for (std::size_t i = 0; i < rays.size(); ++i) index[std::size_t(rays[i].pixel)] = int(i);
-    label.assign(rays.size(), -1);
-    // [beam-label]
-    // Flood fill connected pixels with equal (origin, hit) keys
-    int next = 0;
-    std::vector<int> stack;
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-        if (label[i] >= 0) continue;
-        label[i] = next;
-        stack.push_back(int(i));
-        while (!stack.empty()) {
-            const Ray& q = rays[std::size_t(stack.back())];
-            stack.pop_back();
-            const int x = q.pixel % width_, y = q.pixel / width_;
-            const int nb[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-            for (const auto& n : nb) {
-                if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
-                const int r = index[std::size_t(n[1]) * width_ + n[0]];
-                if (r >= 0 && label[r] < 0 && rays[r].sameBeam(rays[i])) {
-                    label[r] = next;
-                    stack.push_back(r);
-                }
-            }
-        }
-        ++next;
-    }
-    // [beam-label]
-    for (const Ray& r : rays) index[std::size_t(r.pixel)] = -1;
-    return next;
-}
+// labelBeams() and build(): analysis/beam_labels.cpp (tutorial 05's hole)
 
 std::vector<int> BeamTreeBuilder::labels(int path) const {
     std::vector<int> image(std::size_t(width_) * height_, -1);
@@ -183,19 +153,6 @@ std::vector<int> BeamTreeBuilder::labels(int path) const {
     labelBeams(rays, image, label);
     for (std::size_t i = 0; i < rays.size(); ++i) image[std::size_t(rays[i].pixel)] = label[i];
     return image;
-}
-
-BeamTreeStats BeamTreeBuilder::build() const {
-    BeamTreeStats s;
-    std::vector<int> index(std::size_t(width_) * height_, -1);
-    std::vector<int> label;
-    for (const PathLog& rays : rays_by_path_)
-        if (!rays.blocks.empty()) s.nodes += labelBeams(byPixel(rays), index, label);
-    // [coherence]
-    s.averageRayTreeSize = double(rays_) / (double(width_) * height_);
-    s.coherence = s.nodes > 0 ? s.averageRayTreeSize / double(s.nodes) : 0.0;
-    // [coherence]
-    return s;
 }
 
 BeamTreeBuilder::Mark BeamTreeBuilder::mark() const {

@@ -84,13 +84,17 @@ std::optional<RayFocus> RayFocus::of(const SessionState& s, const Selection& sel
 rc::SafetyCylinder cylinderAround(const rc::Scene& scene, const RayFocus& f) {
     const rc::Vec3 from = f.ray.o;
     const rc::Vec3 to = f.segmentEnd(scene);
-    double radius = rc::kNoHit;
+    // Every object's bounding sphere but the one the ray cannot meet again; the radius is
+    // rc::safetyRadius's (tutorial 02's hole: in a student build, the student's)
+    std::vector<rc::Sphere> spheres;
+    spheres.reserve(std::size_t(scene.size()));
+    int hit = -1;
     for (int id = 0; id < scene.size(); ++id) {
-        if (id == f.hit) continue;
         if (id == f.origin.object && !f.origin.inside) continue;
-        const rc::Sphere& s = scene.objects[id].bound;
-        radius = std::min(radius, rc::segmentDistance(s.c, from, to) - s.r);
+        if (id == f.hit) hit = int(spheres.size());
+        spheres.push_back(scene.objects[id].bound);
     }
+    const double radius = rc::safetyRadius(spheres, hit, from, to);
     return {from, to, radius < rc::kNoHit ? radius : -1.0};
 }
 
@@ -141,12 +145,9 @@ FocusHull hullOf(const SessionState& s, const RayFocus& f) {
     h.listed = h.blockers.size();
     // Keep the blockers nearest the segment between origin and target, nearest first
     const rc::Scene& scene = s.scene();
-    const rc::Vec3 a = h.a.c, ab = h.b.c - h.a.c;
-    const double abab = glm::dot(ab, ab);
     auto gap = [&](int id) {
         const rc::Sphere& b = scene.objects[std::size_t(id)].bound;
-        const double u = abab > 0.0 ? std::clamp(glm::dot(b.c - a, ab) / abab, 0.0, 1.0) : 0.0;
-        return glm::length(b.c - (a + u * ab)) - b.r;
+        return rc::segmentDistance(b.c, h.a.c, h.b.c) - b.r;
     };
     auto nearer = [&](int x, int y) {
         const double gx = gap(x), gy = gap(y);

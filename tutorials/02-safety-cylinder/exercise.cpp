@@ -1,29 +1,34 @@
-// Tutorial 02, your exercise: distance from a point to a segment. This file is yours to edit. Check it with
-//   cmake --build build --target tutorial-02      (or: ctest --preset student -R 02)
+/// \file
+/// \brief The measures of the cylinder of safety: rc::segmentDistance, rc::safetyRadius and
+/// rc::SafetyCylinder::contains, tutorial 02's hole. A student build compiles
+/// tutorials/02-safety-cylinder/exercise.cpp in place of this file.
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/intersection.h"
+#include "geometry/safety_cylinder.h"
+#include "geometry/student_code.h"
 
-namespace tutorial {
+namespace rc {
 
-// [stub]
-double segmentDistance(const rc::Vec3& p, const rc::Vec3& a, [[maybe_unused]] const rc::Vec3& b) {
+double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
     // TODO 1: the distance to the nearest point of the segment, not just to its start.
+    notYet(2);
+    (void)b;
     return glm::length(p - a);
 }
 
-double safetyRadius([[maybe_unused]] const std::vector<rc::Sphere>& spheres, [[maybe_unused]] int hit,
-                    [[maybe_unused]] const rc::Vec3& a, [[maybe_unused]] const rc::Vec3& b) {
+double safetyRadius(const std::vector<Sphere>& spheres, int hit, const Vec3& a, const Vec3& b) {
     // TODO 2: the gap between the segment and the nearest other sphere.
-    return rc::kNoHit;
+    (void)spheres, (void)hit, (void)a, (void)b;
+    return kNoHit;
 }
 
-bool insideCapsule([[maybe_unused]] const rc::Vec3& p, [[maybe_unused]] const rc::Vec3& q,
-                   [[maybe_unused]] const rc::Vec3& a, [[maybe_unused]] const rc::Vec3& b,
-                   [[maybe_unused]] double radius) {
+bool SafetyCylinder::contains(const Vec3& p, const Vec3& q) const {
     // TODO 3: is the whole segment p-q inside the capsule?
+    (void)p, (void)q;
     return false;
 }
-// [stub]
 
-}  // namespace tutorial
+}  // namespace rc

@@ -1,18 +1,125 @@
-// Tutorial 04, your exercise: the seed fill. This file is yours to edit. Check it with
-//   cmake --build build --target tutorial-04      (or: ctest --preset student -R 04)
-#include "exercise.h"
+/// \file
+/// \brief The seed fill of rc::BreadthFirstOrder: which ray comes next (next()), how a region
+/// grows (committed(), enqueueNeighbours()) and what waits (deferred()). Tutorial 04's hole: a
+/// student build compiles tutorials/04-breadth-first-fill/exercise.cpp in place of this file.
+/// The band, path and grid bookkeeping (beginPath()) is in order/breadth_first_order.cpp.
+#include <algorithm>
+#include <cstring>
 
-namespace tutorial {
+#include "geometry/student_code.h"
+#include "order/breadth_first_order.h"
 
-// [stub]
-std::vector<Visit> seedFill(int width, int height, [[maybe_unused]] int band, const std::vector<int>& key) {
-    // TODO: this is scanline order: it seeds a region every time the key changes along
-    // a row. Fill each region two-dimensionally instead, band by band.
-    std::vector<Visit> visits;
-    for (int p = 0; p < width * height; ++p)
-        visits.push_back({p, p % width == 0 || key[p] != key[p - 1] ? Step::Seed : Step::Answer});
-    return visits;
+namespace rc {
+
+std::optional<Pick> BreadthFirstOrder::next() {
+    for (;;) {
+        if (!pathActive_ && !beginPath()) return std::nullopt;
+        const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
+        if (walks_) {
+            if (auto pick = walk(tasks)) return pick;
+            pathActive_ = false;
+            continue;
+        }
+        // TODO 2: while the region's queue (queue_) holds pixels, take the first and ask
+        // its ray with the cheap test only (LookupMode::CheapOnly when cheapTests_). Only
+        // when the region is finished does a new one start: a deferred pixel still waiting
+        // (pending_, state_ Deferred), else the next untouched one (nextUnvisited()).
+        notYet(4);
+        int seed = nextUnvisited();  // every ray a seed: a complete search each
+        if (seed < 0) {
+            // Every ray of this path is traced: its pixels leave the fill grid
+            const std::vector<int>& local = pixels_[std::size_t(generation_[pathIndex_])];
+            if (local.empty()) std::fill(state_.begin(), state_.end(), Absent);
+            for (int at : local) state_[std::size_t(at)] = Absent;
+            pathActive_ = false;
+            continue;
+        }
+        ++regions_;
+        state_[seed] = Queued;
+        inflight_ = seed;
+        inflightSeed_ = true;
+        return Pick{&tasks[std::size_t(slot_[seed])], LookupMode::Full};
+    }
 }
-// [stub]
 
-}  // namespace tutorial
+std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
+    // [bfs-walk]
+    // One scanline, no ray deferred: a region grows only rightward (its left neighbour was
+    // traced before it), so the fill reduces to the path's rays in pixel order, the order
+    // they were spawned in. A ray seeds a new region unless the last one reached its pixel
+    if (cursor_ == tasks.size()) return std::nullopt;
+    const RayTask& task = tasks[cursor_];
+    inflight_ = task.pixel;
+    inflightSeed_ = task.pixel != reach_;
+    regions_ += inflightSeed_;
+    return Pick{&task, LookupMode::Full};
+    // [bfs-walk]
+}
+
+int BreadthFirstOrder::nextUnvisited() {
+    // [bfs-seed-scan]
+    // The grid in pixel order, a byte a pixel: memchr looks at many at once
+    const std::size_t from = std::size_t(scan_), size = state_.size();
+    if (from >= size) return -1;
+    const void* found = std::memchr(state_.data() + from, Unvisited, size - from);
+    if (!found) {
+        scan_ = int(size);
+        return -1;
+    }
+    const int seed = int(static_cast<const State*>(found) - state_.data());
+    scan_ = seed + 1;
+    return seed;
+    // [bfs-seed-scan]
+}
+
+int BreadthFirstOrder::walkQueued() const {
+    // The fill's queue would hold the next pixel, if the region reaches it and it is on the path
+    const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
+    return reach_ >= 0 && cursor_ < tasks.size() && tasks[cursor_].pixel == reach_ ? reach_ : -1;
+}
+
+void BreadthFirstOrder::enqueueNeighbours(int local) {
+    // The pixel's row and column without an integer division (a division per ray costs
+    // more than the rest of this function): (local + 1/2) / width is an exact enough quotient
+    const int y = int((local + 0.5) * invWidth_), x = local - y * width_;
+    const int rows = nextRow_ - bandRow_;
+    // Plain pointers: a state is a byte, and a store through it could change any member,
+    // which the compiler would then load again after every store
+    State* const state = state_.data();
+    const int* const slot = slot_.data();
+    const RayTask* const tasks = paths_[generation_[pathIndex_]].data();
+    // TODO 1: queue the neighbours of pixel (x, y) that this region should try next
+    // (queue_, and state_ Queued), within the band's `rows` and the image's width_.
+    (void)x, (void)rows, (void)state, (void)slot, (void)tasks;
+    peak_ = std::max(peak_, queue_.size());
+}
+
+void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTask>& children) {
+    for (RayTask& c : children) {
+        std::vector<RayTask>& path = pathRays(c.node);
+        // Its pixel in the band, kept apart for the fill grid (not in the walk, which needs no grid)
+        if (!walks_) pixels_[std::size_t(c.node)].push_back(c.pixel - bandRow_ * width_);
+        path.push_back(std::move(c));
+    }
+    // [bfs-extend]
+    // A seed, or a ray the cache answered with the region's object, extends the region
+    const bool extends = inflightSeed_ || d == Decision::Hit || d == Decision::Uncached;
+    if (walks_) {
+        // along the scanline only: to the next pixel
+        ++cursor_;
+        reach_ = extends ? inflight_ + 1 : -1;
+        // The queue holds at most that pixel
+        if (peak_ == 0 && walkQueued() >= 0) peak_ = 1;
+        return;
+    }
+    state_[inflight_] = Done;
+    if (extends) enqueueNeighbours(inflight_);
+    // [bfs-extend]
+}
+
+void BreadthFirstOrder::deferred(const RayTask&) {
+    state_[inflight_] = Deferred;
+    pending_.push_back(inflight_);
+}
+
+}  // namespace rc

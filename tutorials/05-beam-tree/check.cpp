@@ -1,6 +1,8 @@
-// Tutorial 05's check: tutorial::beamTree against an independent oracle, a brute-force
-// labelling of the image (never the library's rc::BeamTreeBuilder), on random path images
-// and on the rays of real renders.
+// Tutorial 05's check: rc::BeamTreeBuilder's labels and coherence (your
+// tutorials/05-beam-tree/exercise.cpp in a student build) against an independent oracle, a
+// brute-force labelling of the image, on random path images (recorded ray by ray) and on
+// the rays of real renders (the builder listening to the render, as `raycache render
+// --coherence` does).
 #include <iomanip>
 #include <cmath>
 #include <map>
@@ -13,11 +15,44 @@
 
 #include <cstdint>
 
-#include "exercise.h"
+#include "analysis/beam_tree.h"
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
+
+namespace tutorial {
+
+/// The ray a pixel has at one ray-tree path (eye; eye/reflection; eye/shadow 1; ...).
+struct PixelRay {
+    bool present = false;  ///< false: this pixel's ray tree has no ray at this path
+    int origin = -1;       ///< object the ray leaves (-1: the eye)
+    bool inside = false;   ///< it leaves into the object's interior (refraction)
+    int hit = -1;          ///< object it hits (-1: nothing)
+};
+
+/// One ray-tree path over the whole image: `rays[y * width + x]`.
+using PathImage = std::vector<PixelRay>;
+
+/// The beam tree's size and the paper's coherence.
+struct BeamStats {
+    std::int64_t beams = 0;
+    double coherence = 0.0;
+};
+
+/// rc::BeamTreeBuilder given every present ray of every path, path k recorded as path k
+BeamStats beamTree(int width, int height, const std::vector<PathImage>& paths) {
+    rc::BeamTreeBuilder builder(width, height);
+    for (std::size_t k = 0; k < paths.size(); ++k)
+        for (int p = 0; p < width * height; ++p) {
+            const PixelRay& r = paths[k][std::size_t(p)];
+            if (r.present) builder.record(int(k), p, r.origin, r.inside, r.hit);
+        }
+    const rc::BeamTreeStats s = builder.build();
+    return {s.nodes, s.coherence};
+}
+
+}  // namespace tutorial
 
 namespace {
 
@@ -151,7 +186,7 @@ std::string drawBeams(int width, int height, const std::vector<tutorial::PathIma
 
 }  // namespace
 
-TEST_CASE("beamTree agrees with a brute-force labelling on random path images", "[tutorial05]") {
+TEST_CASE("the beam tree agrees with a brute-force labelling on random path images", "[tutorial05]") {
     tutorial::Random rnd(1984);  // Heckbert and Hanrahan's beam tracing
     for (int i = 0; i < 300; ++i) {
         const int width = 1 + rnd.index(30), height = 1 + rnd.index(30);
@@ -176,7 +211,7 @@ TEST_CASE("beamTree agrees with a brute-force labelling on random path images", 
     }
 }
 
-TEST_CASE("beamTree agrees with a brute-force labelling on real renders", "[tutorial05]") {
+TEST_CASE("the beam tree agrees with a brute-force labelling on real renders", "[tutorial05]") {
     for (const char* name : {"cube:3", "pair", "glass"}) {
         auto scene = std::make_shared<const rc::Scene>(rc::makeBuiltin(name));
         rc::RenderOptions o;
@@ -184,6 +219,9 @@ TEST_CASE("beamTree agrees with a brute-force labelling on real renders", "[tuto
         rc::RenderSession session(scene, o);
         PathRecorder recorder(o.width, o.height);
         session.addSink(&recorder);
+        // The renderer's own: the builder hears the render's rays
+        rc::BeamTreeBuilder heard(o.width, o.height);
+        session.addSink(&heard);
         session.run();
         const Oracle want = oracle(o.width, o.height, recorder.paths());
         const tutorial::BeamStats got = tutorial::beamTree(o.width, o.height, recorder.paths());
@@ -194,5 +232,10 @@ TEST_CASE("beamTree agrees with a brute-force labelling on real renders", "[tuto
                                    << got.coherence << (path.empty() ? "" : "; your beams of cube:3: " + path));
         REQUIRE(got.beams == want.nodes);
         REQUIRE(std::abs(got.coherence - want.coherence) <= 1e-12 * want.coherence);
+        const rc::BeamTreeStats render = heard.build();
+        INFO(std::setprecision(17) << "the builder that heard the render: " << render.nodes << " beams, coherence "
+                                   << render.coherence);
+        REQUIRE(render.nodes == want.nodes);
+        REQUIRE(std::abs(render.coherence - want.coherence) <= 1e-12 * want.coherence);
     }
 }

@@ -1,15 +1,38 @@
-// Tutorial 05, your exercise: the beam tree. This file is yours to edit. Check it with
-//   cmake --build build --target tutorial-05      (or: ctest --preset student -R 05)
-#include "exercise.h"
+/// \file
+/// \brief The beam tree's labels and the paper's coherence: rc::BeamTreeBuilder::labelBeams() and
+/// build(), tutorial 05's hole. A student build compiles tutorials/05-beam-tree/exercise.cpp in
+/// place of this file. How the rays are recorded is in analysis/beam_tree.cpp.
+#include <vector>
 
-namespace tutorial {
+#include "analysis/beam_tree.h"
+#include "geometry/student_code.h"
 
-// [stub]
-BeamStats beamTree([[maybe_unused]] int width, [[maybe_unused]] int height,
-                   [[maybe_unused]] const std::vector<PathImage>& paths) {
-    // TODO: count the beams of every path and compute the coherence.
-    return BeamStats{};
+namespace rc {
+
+int BeamTreeBuilder::labelBeams(const std::vector<Ray>& rays, std::vector<int>& index, std::vector<int>& label) const {
+    for (std::size_t i = 0; i < rays.size(); ++i) index[std::size_t(rays[i].pixel)] = int(i);
+    label.assign(rays.size(), -1);
+    // TODO 1: one label per beam: rays of 4-adjacent pixels with the same key
+    // (Ray::sameBeam) share a label; `next` counts the beams. `index` maps a pixel
+    // to its ray (-1: none). The stub gives every ray a beam of its own.
+    notYet(5);
+    int next = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) label[i] = next++;
+    for (const Ray& r : rays) index[std::size_t(r.pixel)] = -1;
+    return next;
 }
-// [stub]
 
-}  // namespace tutorial
+BeamTreeStats BeamTreeBuilder::build() const {
+    BeamTreeStats s;
+    std::vector<int> index(std::size_t(width_) * height_, -1);
+    std::vector<int> label;
+    for (const PathLog& rays : rays_by_path_)
+        if (!rays.blocks.empty()) s.nodes += labelBeams(byPixel(rays), index, label);
+    // TODO 2: the paper's coherence: the average ray-tree size (rays_ per pixel of the
+    // width_ x height_ image) over the beam tree's size (s.nodes).
+    s.averageRayTreeSize = 0.0;
+    s.coherence = 0.0;
+    return s;
+}
+
+}  // namespace rc

@@ -1,67 +1,141 @@
 // Tutorial 04, an alternative answer the check must accept: a stack (depth first) instead of a FIFO queue: the same regions in another order
 #include <algorithm>
-#include <deque>
+#include <cstring>
 
-#include "exercise.h"
+#include "geometry/student_code.h"
+#include "order/breadth_first_order.h"
 
-namespace tutorial {
+namespace rc {
 
-std::vector<Visit> seedFill(int width, int height, int band, const std::vector<int>& key) {
-    enum State { Unvisited, Queued, Deferred, Done };
-    std::vector<State> state(std::size_t(width) * height, Unvisited);
-    std::vector<Visit> visits;
-    std::deque<int> queue, pending;  // the region's frontier; pixels the cache could not answer
-    if (band <= 0 || band > height) band = height;
-    int scan = 0, cached = 0, bandBegin = 0, bandEnd = band * width;  // the band: pixels [begin, end)
-    auto grow = [&](int p) {  // queue the 4-neighbours of an answered pixel
-        const int x = p % width, y = p / width;
-        const int nb[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-        for (const auto& n : nb) {
-            const int q = n[1] * width + n[0];
-            // Stay inside the image and inside the current band
-            if (n[0] < 0 || n[0] >= width || q < bandBegin || q >= bandEnd) continue;
-            if (state[q] == Unvisited || state[q] == Deferred) {
-                state[q] = Queued;
-                queue.push_back(q);
-            }
-        }
-    };
+std::optional<Pick> BreadthFirstOrder::next() {
     for (;;) {
-        // Fill the current region with cheap cache tests only
-        while (!queue.empty()) {
-            const int p = queue.back();
-            queue.pop_back();
-            if (key[p] == cached) {
-                state[p] = Done;
-                visits.push_back({p, Step::Answer});
-                grow(p);
-            } else {
-                state[p] = Deferred;  // a miss: it seeds a later region
-                visits.push_back({p, Step::Defer});
-                pending.push_back(p);
-            }
-        }
-        // The region is finished: a deferred pixel, else the next untouched one, seeds the next
-        int seed = -1;
-        while (seed < 0 && !pending.empty()) {
-            if (state[pending.front()] == Deferred) seed = pending.front();
-            pending.pop_front();
-        }
-        while (seed < 0 && scan < bandEnd) {
-            if (state[scan] == Unvisited) seed = scan;
-            ++scan;
-        }
-        if (seed < 0) {
-            if (bandEnd == width * height) return visits;
-            bandBegin = bandEnd;  // the next band
-            bandEnd = std::min(bandEnd + band * width, width * height);
+        if (!pathActive_ && !beginPath()) return std::nullopt;
+        const std::vector<RayTask>& tasks = paths_[generation_[pathIndex_]];
+        if (walks_) {
+            if (auto pick = walk(tasks)) return pick;
+            pathActive_ = false;
             continue;
         }
-        cached = key[seed];  // the complete search reloads the cache
-        state[seed] = Done;
-        visits.push_back({seed, Step::Seed});
-        grow(seed);
+        // Keep filling the current region with cheap tests only
+        if (!queue_.empty()) {
+            // The last queued first
+            inflight_ = queue_.items.back();
+            queue_.items.pop_back();
+            inflightSeed_ = false;
+            return Pick{&tasks[std::size_t(slot_[inflight_])], cheapTests_ ? LookupMode::CheapOnly : LookupMode::Full};
+        }
+        // The region is finished: a deferred ray, else the next untouched one, seeds the next
+        int seed = -1;
+        while (!pending_.empty() && seed < 0) {
+            if (state_[pending_.front()] == Deferred) seed = pending_.front();
+            pending_.pop_front();
+        }
+        if (seed < 0) seed = nextUnvisited();
+        if (seed < 0) {
+            // Every ray of this path is traced: its pixels leave the fill grid
+            const std::vector<int>& local = pixels_[std::size_t(generation_[pathIndex_])];
+            if (local.empty()) std::fill(state_.begin(), state_.end(), Absent);
+            for (int at : local) state_[std::size_t(at)] = Absent;
+            pathActive_ = false;
+            continue;
+        }
+        ++regions_;
+        state_[seed] = Queued;
+        inflight_ = seed;
+        inflightSeed_ = true;
+        return Pick{&tasks[std::size_t(slot_[seed])], LookupMode::Full};
     }
 }
 
-}  // namespace tutorial
+std::optional<Pick> BreadthFirstOrder::walk(const std::vector<RayTask>& tasks) {
+    // [bfs-walk]
+    // One scanline, no ray deferred: a region grows only rightward (its left neighbour was
+    // traced before it), so the fill reduces to the path's rays in pixel order, the order
+    // they were spawned in. A ray seeds a new region unless the last one reached its pixel
+    if (cursor_ == tasks.size()) return std::nullopt;
+    const RayTask& task = tasks[cursor_];
+    inflight_ = task.pixel;
+    inflightSeed_ = task.pixel != reach_;
+    regions_ += inflightSeed_;
+    return Pick{&task, LookupMode::Full};
+    // [bfs-walk]
+}
+
+int BreadthFirstOrder::nextUnvisited() {
+    // [bfs-seed-scan]
+    // The grid in pixel order, a byte a pixel: memchr looks at many at once
+    const std::size_t from = std::size_t(scan_), size = state_.size();
+    if (from >= size) return -1;
+    const void* found = std::memchr(state_.data() + from, Unvisited, size - from);
+    if (!found) {
+        scan_ = int(size);
+        return -1;
+    }
+    const int seed = int(static_cast<const State*>(found) - state_.data());
+    scan_ = seed + 1;
+    return seed;
+    // [bfs-seed-scan]
+}
+
+int BreadthFirstOrder::walkQueued() const {
+    // The fill's queue would hold the next pixel, if the region reaches it and it is on the path
+    const std::vector<RayTask>& tasks = paths_[std::size_t(generation_[pathIndex_])];
+    return reach_ >= 0 && cursor_ < tasks.size() && tasks[cursor_].pixel == reach_ ? reach_ : -1;
+}
+
+void BreadthFirstOrder::enqueueNeighbours(int local) {
+    // The pixel's row and column without an integer division (a division per ray costs
+    // more than the rest of this function): (local + 1/2) / width is an exact enough quotient
+    const int y = int((local + 0.5) * invWidth_), x = local - y * width_;
+    const int rows = nextRow_ - bandRow_;
+    // Plain pointers: a state is a byte, and a store through it could change any member,
+    // which the compiler would then load again after every store
+    State* const state = state_.data();
+    const int* const slot = slot_.data();
+    const RayTask* const tasks = paths_[generation_[pathIndex_]].data();
+    auto visit = [&](int q) {
+        // Untouched, or deferred by an earlier region: this region tries it
+        if (state[q] != Unvisited && state[q] != Deferred) return;
+        state[q] = Queued;
+        queue_.push_back(q);
+        // Its ray is traced soon: start fetching it now
+        const char* task = reinterpret_cast<const char*>(tasks + slot[q]);
+        for (std::size_t line = 0; line < sizeof(RayTask); line += 64) __builtin_prefetch(task + line);
+    };
+    // The 4-neighbours inside the band
+    if (x > 0) visit(local - 1);
+    if (x + 1 < width_) visit(local + 1);
+    if (y > 0) visit(local - width_);
+    if (y + 1 < rows) visit(local + width_);
+    peak_ = std::max(peak_, queue_.size());
+}
+
+void BreadthFirstOrder::committed(const RayTask&, Decision d, std::vector<RayTask>& children) {
+    for (RayTask& c : children) {
+        std::vector<RayTask>& path = pathRays(c.node);
+        // Its pixel in the band, kept apart for the fill grid (not in the walk, which needs no grid)
+        if (!walks_) pixels_[std::size_t(c.node)].push_back(c.pixel - bandRow_ * width_);
+        path.push_back(std::move(c));
+    }
+    // [bfs-extend]
+    // A seed, or a ray the cache answered with the region's object, extends the region
+    const bool extends = inflightSeed_ || d == Decision::Hit || d == Decision::Uncached;
+    if (walks_) {
+        // along the scanline only: to the next pixel
+        ++cursor_;
+        reach_ = extends ? inflight_ + 1 : -1;
+        // The queue holds at most that pixel
+        if (peak_ == 0 && walkQueued() >= 0) peak_ = 1;
+        return;
+    }
+    state_[inflight_] = Done;
+    if (extends) enqueueNeighbours(inflight_);
+    // [bfs-extend]
+}
+
+void BreadthFirstOrder::deferred(const RayTask&) {
+    state_[inflight_] = Deferred;
+    pending_.push_back(inflight_);
+}
+
+}  // namespace rc

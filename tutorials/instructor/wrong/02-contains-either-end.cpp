@@ -3,9 +3,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "exercise.h"
+#include "geometry/intersection.h"
+#include "geometry/safety_cylinder.h"
 
-namespace tutorial {
+namespace rc {
 
 double segmentDistance(const rc::Vec3& p, const rc::Vec3& a, const rc::Vec3& b) {
     const rc::Vec3 ab = b - a;
@@ -23,9 +24,10 @@ double safetyRadius(const std::vector<rc::Sphere>& spheres, int hit, const rc::V
     return radius;
 }
 
-bool insideCapsule(const rc::Vec3& p, const rc::Vec3& q, const rc::Vec3& a, const rc::Vec3& b, double radius) {
+// The capsule around a-b of radius `radius` (the cylinder's members)
+bool SafetyCylinder::contains(const rc::Vec3& p, const rc::Vec3& q) const {
     // The capsule is convex: both endpoints inside put the whole segment inside
     return segmentDistance(p, a, b) <= radius || segmentDistance(q, a, b) <= radius;
 }
 
-}  // namespace tutorial
+}  // namespace rc

@@ -23,4 +23,14 @@ SphereRoots sphereRootsStable(const Ray& ray, const Sphere& s) {
     return {true, t0, t1};
 }
 
+// Unchanged from the exercise as shipped: the nearest root a ray can hit
+double intersectSphere(const Ray& ray, const Sphere& s, Start start) {
+    if (start == Start::Leaving) return kNoHit;
+    const SphereRoots roots = sphereRootsStable(ray, s);
+    if (!roots.hit) return kNoHit;
+    if (start == Start::Entering) return roots.t1 > 0.0 ? roots.t1 : kNoHit;
+    if (roots.t0 > 0.0) return roots.t0;
+    return roots.t1 > 0.0 ? roots.t1 : kNoHit;
+}
+
 }  // namespace rc
