@@ -283,8 +283,8 @@ void SceneView::frame() {
     }
     const double margin = 0.12 * std::max(box.width(), box.height()) + 1e-9;
     box.adjust(-margin, -margin, margin, margin);
-    // Room for the caption above and the angle box below
-    const double top = 4.0 * QFontMetricsF(font()).height() + 16, bottom = angleBox_->sizeHint().height() + 16;
+    // Room for the caption above (drawn first) and the angle box below
+    const double top = drawingRect().top() + 8, bottom = angleBox_->sizeHint().height() + 16;
     const double w = std::max(1.0, width() - 16.0), h = std::max(1.0, height() - top - bottom);
     scale_ = zoom_ * std::min(w / box.width(), h / box.height());
     centre_ = box.center();
@@ -345,17 +345,11 @@ QPolygonF SceneView::hullOf(const rc::Sphere& a, const rc::Sphere& b) const {
 }
 
 void SceneView::paintEvent(QPaintEvent*) {
-    // Frame the sketch; project spheres and hulls to the widget
     QPainter p(this);
     p.fillRect(rect(), QColor(28, 30, 36));
     p.setRenderHint(QPainter::Antialiasing, true);
-    frame();
-    const double lw = std::max(1.0, QFontMetricsF(font()).height() / 9.0);  // lines follow Large fonts
-    paintBodiesLayer(p, lw);
-    paintFocusShapes(p, lw);
-    const bool fan = paintFan(p, lw);
-    paintRays(p, fan, lw);
-    // The caption, and the labels clear of it and of each other
+    // The caption first: the drawing goes under it, never beneath it
+    const bool fan = samplesShown_ && !sketch_.fan.rays.empty();
     const QStringList cap = captionLines(fan);
     caption_ = cap.join("\n");
     const QFontMetricsF fm(font());
@@ -364,9 +358,22 @@ void SceneView::paintEvent(QPaintEvent*) {
     double cw = 0;
     for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
     cw = std::min(cw, std::max(40.0, width() - 32.0));
+    const auto lineHeight = [&](const QString& c) {
+        return fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+    };
     double total = 0;
-    for (const QString& c : cap) total += fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+    for (const QString& c : cap) total += lineHeight(c);
     captionRect_ = QRectF(8, 8, cw + 16, total + 8);
+    // Frame the sketch below the caption; project spheres and hulls to the widget
+    frame();
+    const double lw = std::max(1.0, fm.height() / 9.0);  // lines follow Large fonts
+    p.save();
+    p.setClipRect(drawingRect());
+    paintBodiesLayer(p, lw);
+    paintFocusShapes(p, lw);
+    paintFan(p, lw);
+    paintRays(p, fan, lw);
+    p.restore();
     paintLabels(p, lw);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
@@ -374,10 +381,15 @@ void SceneView::paintEvent(QPaintEvent*) {
     p.setPen(Qt::white);
     double y = 12;
     for (const QString& c : cap) {
-        const double h = fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+        const double h = lineHeight(c);
         p.drawText(QRectF(16, y, cw + 2, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, c);
         y += h;
     }
+}
+
+QRectF SceneView::drawingRect() const {
+    const double top = captionRect_.isNull() ? 0.0 : captionRect_.bottom() + 4;
+    return QRectF(0, top, width(), std::max(0.0, height() - top));
 }
 
 void SceneView::paintBodiesLayer(QPainter& p, double lw) {
@@ -435,7 +447,7 @@ void SceneView::paintFocusShapes(QPainter& p, double lw) const {
     }
 }
 
-bool SceneView::paintFan(QPainter& p, double lw) const {
+void SceneView::paintFan(QPainter& p, double lw) const {
     const SceneSketch& k = sketch_;
     // The sample rays of the pixel in focus: the shadow rays fan out to the light's sphere
     const bool fan = samplesShown_ && !k.fan.rays.empty();
@@ -464,7 +476,6 @@ bool SceneView::paintFan(QPainter& p, double lw) const {
         p.setBrush(withAlpha(palette::kLight, 60));
         p.drawEllipse(discOf(l));
     }
-    return fan;
 }
 
 void SceneView::paintRays(QPainter& p, bool fan, double lw) const {

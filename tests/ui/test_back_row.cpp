@@ -88,6 +88,9 @@ TEST_CASE("At 1280x720 with large fonts no label of the scene view covers anothe
             if (!sv || !sv->isVisible()) continue;
             sv->grab();  // paints, recording the layout
             ++views;
+            // The scene is drawn below its caption, never beneath it
+            REQUIRE_FALSE(sv->captionRect().intersects(sv->drawingRect()));
+            REQUIRE(sv->drawingRect().height() > sv->height() / 3);
             const std::vector<QRectF>& r = sv->labelRects();
             REQUIRE(!r.empty());
             for (std::size_t i = 0; i < r.size(); ++i) {
