@@ -149,12 +149,18 @@ TEST_CASE("The legend's lines are as tall in a shown window as in a screenshot, 
     // The --screenshot path: the window grabbed into a pixmap
     w.grab();
     const double screenshot = w.overlayPainter().legendLayout().lineHeight;
-    // A screen that reports 72 dots per inch (an X server may), not the offscreen 96
+    // A screen that reports 72 dots per inch (an X server may), not the offscreen 96: the
+    // same legend painted by a painter of its own on an image of that resolution
     QImage low(v->size(), QImage::Format_ARGB32);
     low.setDotsPerMeterX(int(std::lround(72 / 0.0254)));
     low.setDotsPerMeterY(int(std::lround(72 / 0.0254)));
-    v->render(&low);
-    const double lowDpi = w.overlayPainter().legendLayout().lineHeight;
+    OverlayPainter own;
+    {
+        QPainter p(&low);
+        p.setFont(v->font());
+        own.paintLegend(p, rcgui::testing::stateOf(w), w.overlays(), w.selection(), QRectF(v->rect()), v->shownImageRect());
+    }
+    const double lowDpi = own.legendLayout().lineHeight;
     REQUIRE(window > 0.0);
     REQUIRE(screenshot == window);
     REQUIRE(lowDpi == window);
