@@ -1,5 +1,7 @@
 #include "scene_view.h"
 
+#include "legend_layout.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -348,11 +350,13 @@ void SceneView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), QColor(28, 30, 36));
     p.setRenderHint(QPainter::Antialiasing, true);
+    // Text in pixels, as the image view's legend: alike on any screen and in a screenshot
+    p.setFont(legendFont(font()));
     // The caption first: the drawing goes under it, never beneath it
     const bool fan = samplesShown_ && !sketch_.fan.rays.empty();
     const QStringList cap = captionLines(fan);
     caption_ = cap.join("\n");
-    const QFontMetricsF fm(font());
+    const QFontMetricsF fm(legendFont(font()));
     // Lines wider than the view wrap: the caption keeps the font of the rest (large on a
     // projector), never cut off
     double cw = 0;
@@ -575,7 +579,7 @@ QStringList SceneView::captionLines(bool fan) const {
 void SceneView::paintLabels(QPainter& p, double lw) {
     const SceneSketch& k = sketch_;
     const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
-    const QFontMetricsF fm(font());
+    const QFontMetricsF fm(legendFont(font()));
     labelRects_.clear();
     const auto label = [&](const QPointF& at, const QString& t, const QColor& c) { placeLabel(p, at, t, c); };
     label(toWidget(k.eye), "eye", Qt::white);
@@ -609,7 +613,7 @@ void SceneView::paintLabels(QPainter& p, double lw) {
 void SceneView::placeLabel(QPainter& p, const QPointF& at, const QString& t, const QColor& c) {
     // Each label in the view, clear of the caption and of the labels before it (moved a
     // line down or up at a time until it is), so that none hides another
-    const QFontMetricsF fm(font());
+    const QFontMetricsF fm(legendFont(font()));
     const QRectF& box = captionRect_;
     QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
     if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view
