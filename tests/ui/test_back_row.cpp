@@ -59,8 +59,8 @@ int checkImageView(const ImageView* v, const OverlayPainter& painter) {
 
 }  // namespace
 
-TEST_CASE("At 1280x720 with large fonts no label of the scene view covers another, its caption or its controls; "
-          "no box of an image view covers its picture or another box",
+TEST_CASE("At 1280x720 with large fonts no label of the scene view covers another, its caption or its controls, "
+          "and no box of an image view covers its picture or another box",
           "[gui][tour][layout]") {
     int views = 0, labels = 0, imageStops = 0, boxes = 0;
     for (const QString& file : {QString("hanrahan86.json"), QString("debugging.json")}) {
