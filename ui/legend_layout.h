@@ -26,7 +26,7 @@ struct LegendLayout {
     QRectF key;      ///< the key of the overlays' colours (empty: none)
     QRectF bar;      ///< the heatmap's colour bar, its title and values (empty: none)
     bool fits = false;        ///< every box is whole inside the column
-    double lineHeight = 0.0;  ///< the spacing of the boxes' lines, in widget pixels
+    double lineHeight = 0.0;  ///< the spacing of the boxes' lines as drawn on the paint device, in its pixels
     /// The boxes laid out (the non-empty ones of info, key and bar).
     std::vector<QRectF> boxes() const;
 };

@@ -450,7 +450,6 @@ LegendLayout OverlayPainter::layOut(const QFont& font, const QRectF& area, const
         if (scale == kFontScalesToFit.front())
             legendWidth_ = std::max({info.naturalWidth, key.naturalWidth, bar.naturalWidth}) + 2 * kLegendGap;
         layout = layOutLegend(area, image, info, key, bar);
-        layout.lineHeight = fm.height();
         if (layout.fits) break;
     }
     return layout;
@@ -463,6 +462,8 @@ void OverlayPainter::paintLegend(QPainter& p, const rc::SessionState& s, const O
     legendKey_ = layout_.key.united(layout_.bar);
     p.save();
     p.setFont(legendFont_);
+    // The spacing of the lines as drawn on this device (a screen, a pixmap, an image)
+    layout_.lineHeight = QFontMetricsF(p.font()).height();
     p.setRenderHint(QPainter::Antialiasing, true);
     drawInfo(p, t);
     drawKeys(p, t);

@@ -1,5 +1,7 @@
 #include "scene_view.h"
 
+#include "legend_layout.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -283,8 +285,8 @@ void SceneView::frame() {
     }
     const double margin = 0.12 * std::max(box.width(), box.height()) + 1e-9;
     box.adjust(-margin, -margin, margin, margin);
-    // Room for the caption above and the angle box below
-    const double top = 4.0 * QFontMetricsF(font()).height() + 16, bottom = angleBox_->sizeHint().height() + 16;
+    // Room for the caption above (drawn first) and the angle box below
+    const double top = drawingRect().top() + 8, bottom = angleBox_->sizeHint().height() + 16;
     const double w = std::max(1.0, width() - 16.0), h = std::max(1.0, height() - top - bottom);
     scale_ = zoom_ * std::min(w / box.width(), h / box.height());
     centre_ = box.center();
@@ -345,28 +347,37 @@ QPolygonF SceneView::hullOf(const rc::Sphere& a, const rc::Sphere& b) const {
 }
 
 void SceneView::paintEvent(QPaintEvent*) {
-    // Frame the sketch; project spheres and hulls to the widget
     QPainter p(this);
     p.fillRect(rect(), QColor(28, 30, 36));
     p.setRenderHint(QPainter::Antialiasing, true);
-    frame();
-    const double lw = std::max(1.0, QFontMetricsF(font()).height() / 9.0);  // lines follow Large fonts
-    paintBodiesLayer(p, lw);
-    paintFocusShapes(p, lw);
-    const bool fan = paintFan(p, lw);
-    paintRays(p, fan, lw);
-    // The caption, and the labels clear of it and of each other
+    // Text in pixels, as the image view's legend: alike on any screen and in a screenshot
+    p.setFont(legendFont(font()));
+    // The caption first: the drawing goes under it, never beneath it
+    const bool fan = samplesShown_ && !sketch_.fan.rays.empty();
     const QStringList cap = captionLines(fan);
     caption_ = cap.join("\n");
-    const QFontMetricsF fm(font());
+    const QFontMetricsF fm(legendFont(font()));
     // Lines wider than the view wrap: the caption keeps the font of the rest (large on a
     // projector), never cut off
     double cw = 0;
     for (const QString& c : cap) cw = std::max(cw, fm.horizontalAdvance(c));
     cw = std::min(cw, std::max(40.0, width() - 32.0));
+    const auto lineHeight = [&](const QString& c) {
+        return fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+    };
     double total = 0;
-    for (const QString& c : cap) total += fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+    for (const QString& c : cap) total += lineHeight(c);
     captionRect_ = QRectF(8, 8, cw + 16, total + 8);
+    // Frame the sketch below the caption; project spheres and hulls to the widget
+    frame();
+    const double lw = std::max(1.0, fm.height() / 9.0);  // lines follow Large fonts
+    p.save();
+    p.setClipRect(drawingRect());
+    paintBodiesLayer(p, lw);
+    paintFocusShapes(p, lw);
+    paintFan(p, lw);
+    paintRays(p, fan, lw);
+    p.restore();
     paintLabels(p, lw);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 175));
@@ -374,10 +385,15 @@ void SceneView::paintEvent(QPaintEvent*) {
     p.setPen(Qt::white);
     double y = 12;
     for (const QString& c : cap) {
-        const double h = fm.boundingRect(QRectF(0, 0, cw + 2, 1e6), Qt::TextWordWrap, c).height();
+        const double h = lineHeight(c);
         p.drawText(QRectF(16, y, cw + 2, h), Qt::AlignTop | Qt::AlignLeft | Qt::TextWordWrap, c);
         y += h;
     }
+}
+
+QRectF SceneView::drawingRect() const {
+    const double top = captionRect_.isNull() ? 0.0 : captionRect_.bottom() + 4;
+    return QRectF(0, top, width(), std::max(0.0, height() - top));
 }
 
 void SceneView::paintBodiesLayer(QPainter& p, double lw) {
@@ -435,7 +451,7 @@ void SceneView::paintFocusShapes(QPainter& p, double lw) const {
     }
 }
 
-bool SceneView::paintFan(QPainter& p, double lw) const {
+void SceneView::paintFan(QPainter& p, double lw) const {
     const SceneSketch& k = sketch_;
     // The sample rays of the pixel in focus: the shadow rays fan out to the light's sphere
     const bool fan = samplesShown_ && !k.fan.rays.empty();
@@ -464,7 +480,6 @@ bool SceneView::paintFan(QPainter& p, double lw) const {
         p.setBrush(withAlpha(palette::kLight, 60));
         p.drawEllipse(discOf(l));
     }
-    return fan;
 }
 
 void SceneView::paintRays(QPainter& p, bool fan, double lw) const {
@@ -564,7 +579,7 @@ QStringList SceneView::captionLines(bool fan) const {
 void SceneView::paintLabels(QPainter& p, double lw) {
     const SceneSketch& k = sketch_;
     const rc::SafetyCylinder& cyl = k.cylinder.cylinder;
-    const QFontMetricsF fm(font());
+    const QFontMetricsF fm(legendFont(font()));
     labelRects_.clear();
     const auto label = [&](const QPointF& at, const QString& t, const QColor& c) { placeLabel(p, at, t, c); };
     label(toWidget(k.eye), "eye", Qt::white);
@@ -598,7 +613,7 @@ void SceneView::paintLabels(QPainter& p, double lw) {
 void SceneView::placeLabel(QPainter& p, const QPointF& at, const QString& t, const QColor& c) {
     // Each label in the view, clear of the caption and of the labels before it (moved a
     // line down or up at a time until it is), so that none hides another
-    const QFontMetricsF fm(font());
+    const QFontMetricsF fm(legendFont(font()));
     const QRectF& box = captionRect_;
     QRectF r(at.x() + 6, at.y() - fm.height() - 2, fm.horizontalAdvance(t) + 8, fm.height() + 2);
     if (r.right() > width() - 4) r.moveRight(width() - 4);  // stays in the view

@@ -90,6 +90,8 @@ public:
     /// layout the back-row test reads.
     const std::vector<QRectF>& labelRects() const { return labelRects_; }
     const QRectF& captionRect() const { return captionRect_; }
+    /// Where the scene is drawn (clipped): the view below the caption.
+    QRectF drawingRect() const;
 
     QSize sizeHint() const override { return {520, 520}; }
 
@@ -113,8 +115,8 @@ private:
     void paintBodiesLayer(QPainter& p, double lw);
     /// The blocker hull, its blockers, origin and target; the cylinder of safety.
     void paintFocusShapes(QPainter& p, double lw) const;
-    /// The sample rays of the pixel in focus and the lights' spheres; whether it drew them.
-    bool paintFan(QPainter& p, double lw) const;
+    /// The sample rays of the pixel in focus and the lights' spheres (when Samples is on).
+    void paintFan(QPainter& p, double lw) const;
     /// The ray tree (only the ray in focus under a fan), the lights, the eye, the ray's axis.
     void paintRays(QPainter& p, bool fan, double lw) const;
     /// The caption's lines: what is seen, with the sizes the paper's figures compare.

@@ -59,8 +59,8 @@ int checkImageView(const ImageView* v, const OverlayPainter& painter) {
 
 }  // namespace
 
-TEST_CASE("At 1280x720 with large fonts no label of the scene view covers another, its caption or its controls; "
-          "no box of an image view covers its picture or another box",
+TEST_CASE("At 1280x720 with large fonts no label of the scene view covers another, its caption or its controls, "
+          "and no box of an image view covers its picture or another box",
           "[gui][tour][layout]") {
     int views = 0, labels = 0, imageStops = 0, boxes = 0;
     for (const QString& file : {QString("hanrahan86.json"), QString("debugging.json")}) {
@@ -88,6 +88,9 @@ TEST_CASE("At 1280x720 with large fonts no label of the scene view covers anothe
             if (!sv || !sv->isVisible()) continue;
             sv->grab();  // paints, recording the layout
             ++views;
+            // The scene is drawn below its caption, never beneath it
+            REQUIRE_FALSE(sv->captionRect().intersects(sv->drawingRect()));
+            REQUIRE(sv->drawingRect().height() > sv->height() / 3);
             const std::vector<QRectF>& r = sv->labelRects();
             REQUIRE(!r.empty());
             for (std::size_t i = 0; i < r.size(); ++i) {
@@ -146,12 +149,18 @@ TEST_CASE("The legend's lines are as tall in a shown window as in a screenshot, 
     // The --screenshot path: the window grabbed into a pixmap
     w.grab();
     const double screenshot = w.overlayPainter().legendLayout().lineHeight;
-    // A screen that reports 72 dots per inch (an X server may), not the offscreen 96
+    // A screen that reports 72 dots per inch (an X server may), not the offscreen 96: the
+    // same legend painted by a painter of its own on an image of that resolution
     QImage low(v->size(), QImage::Format_ARGB32);
     low.setDotsPerMeterX(int(std::lround(72 / 0.0254)));
     low.setDotsPerMeterY(int(std::lround(72 / 0.0254)));
-    v->render(&low);
-    const double lowDpi = w.overlayPainter().legendLayout().lineHeight;
+    OverlayPainter own;
+    {
+        QPainter p(&low);
+        p.setFont(v->font());
+        own.paintLegend(p, rcgui::testing::stateOf(w), w.overlays(), w.selection(), QRectF(v->rect()), v->shownImageRect());
+    }
+    const double lowDpi = own.legendLayout().lineHeight;
     REQUIRE(window > 0.0);
     REQUIRE(screenshot == window);
     REQUIRE(lowDpi == window);
