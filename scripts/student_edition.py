@@ -3,7 +3,9 @@
 
   student_edition.py export OUT [--open 01,03]   write the edition (default: every tutorial open)
   student_edition.py stub FILE NN                 print FILE with tutorial NN's solution regions stubbed
-  student_edition.py leaks EDITION                fail when a line of a solution region occurs in EDITION
+  student_edition.py leaks EDITION [--site HTML]   fail when a line of a solution region occurs in EDITION
+                                                  (and in the docs site HTML, the instructor's, less the
+                                                  pages the edition replaces)
   student_edition.py inject EDITION               put the instructor's solutions back into EDITION's holes
 
 Solution regions (nbgrader's convention, in C++ comments):
@@ -17,6 +19,7 @@ An open tutorial's region becomes its stub; a closed one keeps its solution (as 
 releases it after the deadline). The edition leaves out tutorials/instructor/ and replaces
 each file under scripts/student_edition/replace/ (pages that quote solutions).
 """
+import html
 import os
 import re
 import shutil
@@ -125,7 +128,7 @@ def norm(line):
     return ' '.join(line.split())
 
 
-def leaks(root, edition, open_tutorials):
+def leaks(root, edition, open_tutorials, site=None):
     """Every whitespace-normalised line of 25 characters or more of an open tutorial's
     solution region, looked for in every text file of the edition. A line that the
     instructor's project also holds outside the regions and outside tutorials/ (library
@@ -154,6 +157,8 @@ def leaks(root, edition, open_tutorials):
     for n in shared:
         del needles[n]
     found = 0
+    if site:
+        found += site_leaks(root, site, needles)
     for dirpath, _, names in os.walk(edition):
         rel = os.path.relpath(dirpath, edition)
         if rel.split(os.sep)[0] in ('build', '.git'):
@@ -172,6 +177,47 @@ def leaks(root, edition, open_tutorials):
     print(f'leak check: {len(needles)} lines of solution regions (25 characters or more; {len(shared)} more '
           f'shared with library code outside the regions) looked for in {edition}: {found} found')
     return found == 0
+
+
+def dropped_pages(root):
+    """The docs site's pages the edition does not have as the instructor's site shows them:
+    each page under scripts/student_edition/replace/docs/pages/ is replaced, and its HTML file
+    is named after the page's id (the first `{#id}` of the instructor's page)."""
+    out = set()
+    for f in tracked(root):
+        if f.startswith(REPLACE + 'docs/pages/') and f.endswith('.md'):
+            page = os.path.join(root, f[len(REPLACE):])
+            m = re.search(r'\{#(\w+)\}', open(page, encoding='utf-8').read())
+            if m:
+                out.add(m.group(1) + '.html')
+    return out
+
+
+def site_leaks(root, site, needles):
+    """The needles looked for in the built docs site `site` (HTML, its tags stripped line by
+    line: Doxygen writes a code line per line), except the pages the edition replaces. The
+    site is the instructor's (the edition builds no docs), so this is what the edition's site
+    would show of it."""
+    dropped = dropped_pages(root)
+    found = pages = 0
+    for dirpath, _, names in os.walk(site):
+        for name in sorted(names):
+            if not name.endswith(('.html', '.js')) or name in dropped:
+                continue
+            pages += 1
+            path = os.path.join(dirpath, name)
+            try:
+                lines = open(path, encoding='utf-8').read().split('\n')
+            except (UnicodeDecodeError, OSError):
+                continue
+            for k, line in enumerate(lines):
+                n = norm(html.unescape(re.sub(r'<[^>]*>', '', line)))
+                if n in needles:
+                    print(f'{path}:{k + 1}: a line of {needles[n]}: {n}')
+                    found += 1
+    print(f'leak check of the docs site {site}: {pages} pages and scripts ({len(dropped)} replaced in the edition '
+          f'left out: {", ".join(sorted(dropped))}): {found} lines of solution regions found')
+    return found
 
 
 def inject(root, edition):
@@ -199,8 +245,12 @@ def main(argv):
         export(root, argv[1], opened)
     elif len(argv) == 3 and argv[0] == 'stub':
         sys.stdout.write(stubbed(open(argv[1], encoding='utf-8').read(), [argv[2]]))
-    elif len(argv) == 2 and argv[0] == 'leaks':
-        return 0 if leaks(root, argv[1], opened) else 1
+    elif len(argv) in (2, 4) and argv[0] == 'leaks':
+        site = argv[3] if len(argv) == 4 and argv[2] == '--site' else None
+        if len(argv) == 4 and site is None:
+            print(__doc__)
+            return 2
+        return 0 if leaks(root, argv[1], opened, site) else 1
     elif len(argv) == 2 and argv[0] == 'inject':
         inject(root, argv[1])
     else:

@@ -3,7 +3,10 @@
 # tutorial targets only (no GUI, web or docs):
 #  1. export the edition (every tutorial open) and look for leaks: no whitespace-normalised
 #     line of 25 characters or more of a solution region (or of tutorials/instructor/)
-#     occurs anywhere in it, sources, pages and tests;
+#     occurs anywhere in it, sources, pages and tests, nor in the built docs site (SITE,
+#     default build/docs/html when it is built: the instructor's site, which scripts/test.sh
+#     builds before this stage, less the pages the edition replaces; the edition itself
+#     builds no docs);
 #  2. build it with the README's commands: every tutorial says NOT YET, and the CLI says in
 #     one sentence that it cannot draw before tutorial 01;
 #  3. put the instructor's solutions into the holes: every tutorial says SOLVED, and every
@@ -11,7 +14,7 @@
 #     build/src/raycache) renders it, uncached and with the caches that use the holes (and
 #     in breadth-first order, tutorial 04's fill);
 #  4. put each recorded wrong answer of a hole tutorial into its exercise.cpp: NOT YET.
-# Usage: scripts/student_edition_check.sh [MAIN_RAYCACHE] [WORK_DIR]
+# Usage: scripts/student_edition_check.sh [MAIN_RAYCACHE] [WORK_DIR] [SITE]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 main="${1:-$root/build/src/raycache}"
@@ -25,7 +28,13 @@ edition="$work/edition"
 jobs=$(nproc)
 rm -rf "$edition"
 "$root/scripts/student_edition.sh" "$edition"
-python3 "$root/scripts/student_edition.py" leaks "$edition"
+site="${3:-$root/build/docs/html}"
+if [ -d "$site" ]; then
+  python3 "$root/scripts/student_edition.py" leaks "$edition" --site "$(realpath "$site")"
+else
+  echo "student edition: no docs site at $site (not built): the site is not checked"
+  python3 "$root/scripts/student_edition.py" leaks "$edition"
+fi
 
 launcher=()
 if command -v ccache >/dev/null; then

@@ -81,6 +81,9 @@ public:
     /// Frame the whole scene rather than the ray in focus.
     void setWholeScene(bool on);
     /// Where world point `p` is drawn (widget coordinates), in the current framing.
+    /// The student's rc::Hull of `a` and `b` (a student build with tutorial 03 open), in widget
+    /// coordinates: its section in the view's plane.
+    QPolygonF studentHull(const rc::Sphere& a, const rc::Sphere& b) const;
     QPointF toWidget(const rc::Vec3& p) const;
     /// Widget pixels per world unit.
     double scale() const { return scale_; }
