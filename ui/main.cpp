@@ -11,6 +11,7 @@
 #include "gui_options.h"
 #include "main_window.h"
 #include "screenshot.h"
+#include "tour_player.h"
 
 int main(int argc, char** argv) {
     rcgui::FrameLog::sinceStart();  // the clock of first-frame starts here
@@ -23,7 +24,8 @@ int main(int argc, char** argv) {
     switch (rcgui::parseGuiOptions(args, opt, message)) {
         case rcgui::ParseResult::Help: out << message << Qt::endl; return 0;
         case rcgui::ParseResult::Error:
-            err << "raycache-gui: " << message << "\n(try raycache-gui --help)" << Qt::endl;
+            // One line: what is wrong, and where to read what is right
+            err << "raycache-gui: " << message.simplified() << " (try raycache-gui --help)" << Qt::endl;
             return 2;
         case rcgui::ParseResult::Ok: break;
     }
@@ -101,13 +103,14 @@ int main(int argc, char** argv) {
         idle->setInterval(100);
         QObject::connect(&w, &rcgui::MainWindow::shown, idle, qOverload<>(&QTimer::start));
         QObject::connect(idle, &QTimer::timeout, &w, [&w, idle] {
-            if (w.controller().busy() || w.compareController().busy()) return;
+            if (w.controller().busy() || w.compareController().busy() || w.tourPlayer().aheadBusy()) return;
             idle->stop();
             if (w.stop() > 0 && w.stop() < w.stopCount()) w.goToStop(w.stop() + 1);
             else QApplication::quit();
         });
     }
     if (!stops.empty()) {
+        w.tourPlayer().setAhead(opt.renderAhead);
         w.setTour(tour, stops);
         w.goToStop(opt.stop);
     } else {

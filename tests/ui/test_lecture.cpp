@@ -306,7 +306,7 @@ TEST_CASE("The frame log (--frame-log) writes one line per UI-thread task, first
     gui.start(RAYCACHE_GUI, {"--tour", bad.fileName(), "--screenshot", dir.filePath("bad.png")});
     REQUIRE(gui.waitForFinished(60000));
     REQUIRE(gui.exitCode() == 2);
-    REQUIRE(QString::fromUtf8(gui.readAllStandardError()).contains(bad.fileName() + ":2:3: stop 1 (x): --zoom must be"));
+    REQUIRE(QString::fromUtf8(gui.readAllStandardError()).contains(bad.fileName() + ":2:3: stop 1 (x): --zoom"));
 }
 
 TEST_CASE("The event log holds the newest rays of a long render, a bounded number of rows", "[gui][stall]") {
