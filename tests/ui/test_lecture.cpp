@@ -86,8 +86,8 @@ TEST_CASE("A bad stop is reported at its place in the tour file", "[gui][tour]")
     QString why;
     REQUIRE(stopOptions(tour, 1, GuiOptions{}, why));
     REQUIRE_FALSE(stopOptions(tour, 2, GuiOptions{}, why));
-    REQUIRE(why.startsWith("t.json:3:3: stop 2 (Bad): --cache must be"));
-    REQUIRE(why.contains("'lru'"));
+    REQUIRE(why.startsWith("t.json:3:3: stop 2 (Bad): --cache"));  // the CLI's words (CLI11)
+    REQUIRE(why.contains("lru"));
 }
 
 TEST_CASE("PageDown and PageUp move between stops, R brings a stop back as written", "[gui][tour]") {
