@@ -49,6 +49,14 @@ rc::Tour tourOf(std::size_t stops) {
 /// The window's picture as the core drew it.
 std::vector<std::uint8_t> pixels(const rc::SessionState& s) { return s.session().image().rgb8(); }
 
+/// `w` as raycache-gui shows it: renders built on workers (so tours render ahead), at a
+/// projector's size; any error fails the test.
+void makeLive(MainWindow& w) {
+    w.setErrorReporter([](const QString& t, const QString& m) { FAIL((t + ": " + m).toStdString()); });
+    w.setWorkerSessions(true);
+    showAt(w, 1280, 720);
+}
+
 /// Nothing of the window runs: neither its renders nor a render made ahead.
 bool idle(MainWindow& w) {
     return !w.controller().busy() && !w.compareController().busy() && !w.tourPlayer().aheadBusy() && w.controller().state();
@@ -58,9 +66,7 @@ bool idle(MainWindow& w) {
 
 TEST_CASE("The next stop is rendered ahead, and reaching it starts no new render", "[gui][tour][ahead]") {
     MainWindow w;
-    w.setErrorReporter([](const QString& t, const QString& m) { FAIL((t + ": " + m).toStdString()); });
-    w.setWorkerSessions(true);
-    showAt(w, 1280, 720);
+    makeLive(w);
     GuiOptions second = smallStop(rc::CacheKind::None, rc::OrderKind::Scanline, 3000);
     second.compare = CompareChoice{rc::CacheKind::Blocker, rc::OrderKind::BreadthFirst};
     w.setTour(tourOf(2), {smallStop(rc::CacheKind::Blocker, rc::OrderKind::BreadthFirst, 2000), second});
@@ -94,9 +100,7 @@ TEST_CASE("The next stop is rendered ahead, and reaching it starts no new render
 
 TEST_CASE("A stop whose render is the one shown goes on with it", "[gui][tour][ahead]") {
     MainWindow w;
-    w.setErrorReporter([](const QString& t, const QString& m) { FAIL((t + ": " + m).toStdString()); });
-    w.setWorkerSessions(true);
-    showAt(w, 1280, 720);
+    makeLive(w);
     GuiOptions later = smallStop(rc::CacheKind::Blocker, rc::OrderKind::Scanline, 4000);
     later.overlays = *Overlays::parse("cylinder");
     w.setTour(tourOf(3), {smallStop(rc::CacheKind::Blocker, rc::OrderKind::Scanline, 1500), later,
