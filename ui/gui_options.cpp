@@ -2,7 +2,9 @@
 
 #include <cmath>
 
-#include <QCommandLineParser>
+#include <algorithm>
+
+#include "cli/flag_definitions.h"
 
 #include "labels.h"
 #include "order/order_registry.h"
@@ -35,13 +37,6 @@ QStringList cacheNames() {
 QStringList orderNames() {
     QStringList out;
     for (const std::string& n : rc::orderRegistry().names()) out << text(n);
-    return out;
-}
-/// Every exact complete search's name (rc::searchRegistry; not Embree's, for comparison only)
-QStringList searchNames() {
-    QStringList out;
-    for (const rc::SearchInfo& s : rc::searchRegistry().entries())
-        if (!s.comparisonOnly) out << text(s.name);
     return out;
 }
 constexpr int kMaxSize = int(rc::NffLimits::maxResolution);
@@ -96,256 +91,305 @@ std::optional<SceneAngle> parseSceneAngle(const QString& s) {
     return std::nullopt;
 }
 
-ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message) {
-    // Declare the options, in the groups the help lists
-    QCommandLineParser p;
-    p.setApplicationDescription(
-        "RayCache: step through ray tracing ray by ray, with Hanrahan's (1986) blocker lists,\n"
-        "Speer-DeRose-Barsky cylinders of safety and the breadth-first frontier drawn on the image.\n"
-        "With no display (and no QT_QPA_PLATFORM), renders headless to a PNG and exits.");
-    p.addPositionalArgument("scene", "an .nff file or a built-in such as cube:4 (default cube:4)", "[scene]");
-    const QCommandLineOption help({"h", "help"}, "Show this help.");
-    const QCommandLineOption cache("cache", cacheNames().join(" | ") + " (default blocker)", "kind");
-    const QCommandLineOption order("order", orderNames().join(" | ") + " (default bfs)", "kind");
-    const QCommandLineOption width("width", "image width (default: the scene's)", "W");
-    const QCommandLineOption height("height", "image height (default: the scene's)", "H");
-    const QCommandLineOption steps("steps", "rays to trace before showing (screenshots: default 20000)", "N");
-    const QCommandLineOption overlays("overlays", "cylinder,cone,frontier,misses,samples (or all, none, grid)", "list");
-    const QCommandLineOption heatmap("heatmap", "none | tests | hitmiss | hitrate | order | beam", "mode");
-    const QCommandLineOption screenshot("screenshot", "write the window to this PNG and exit", "file");
-    const QCommandLineOption window("window", "window size of screenshots (default 1600x1000)", "WxH");
-    const QCommandLineOption select("select", "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray)", "x,y[:path]");
-    const QCommandLineOption accel("accel", searchNames().join(" | ") + ": what answers complete searches (default linear)", "kind");
-    const QCommandLineOption band("band", "breadth-first and progressive orders: scanlines per band, 0 for the whole image (default: by cache and search, as raycache render)", "N");
-    const QCommandLineOption zoom("zoom", "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel", "F");
-    const QCommandLineOption record("record", "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit", "dir");
-    const QCommandLineOption every("every", "--record: steps between frames (default 10000)", "N");
-    const QCommandLineOption large("large-fonts", "bigger text, for a projector");
-    const QCommandLineOption present("present", "presentation mode: the panels hidden, large fonts (F11 in the window)");
-    const QCommandLineOption compare("compare", "run a second render (another cache and order) in lockstep beside the first, e.g. none:scanline", "cache:order");
-    const QCommandLineOption sceneView("scene-view", "show the 3D scene beside the image: side (across the ray in focus, the paper's Figure 2), along (down the ray, Figure 1), top or front", "angle");
-    const QCommandLineOption orbit("orbit", "--scene-view: turn the view by YAW and PITCH degrees", "yaw,pitch");
-    // Distributed ray tracing, as `raycache render` takes it
-    const QCommandLineOption spp("spp", "pixel samples, stratified and jittered (default 1)", "N");
-    const QCommandLineOption lightRadius("light-radius", "lights become spheres of this radius (default 0)", "R");
-    const QCommandLineOption shadowSamples("shadow-samples", "shadow rays per light and hit when --light-radius > 0", "K");
-    const QCommandLineOption gloss("gloss", "half-angle in degrees of the cone of glossy reflections (default 0)", "DEG");
-    const QCommandLineOption glossSamples("gloss-samples", "reflection rays per hit when --gloss > 0", "K");
-    const QCommandLineOption seed("seed", "seed of distributed ray tracing's samples (default 1986)", "S");
-    // Lectures
-    const QCommandLineOption tour("tour", "open a tour: a JSON file of stops, each a caption and what to show (PageDown/PageUp move)", "file");
-    const QCommandLineOption stop("stop", "--tour: the stop to open on, from 1 (default 1)", "K");
-    const QCommandLineOption focus("focus", "fit the view to this image rectangle, in pixels", "x0,y0,x1,y1");
-    const QCommandLineOption missReason("miss-reason", "Next miss stops only at misses of this reason (" + missReasonNames().join(", ") + ")", "reason");
-    const QCommandLineOption frameLog("frame-log", "write one line per UI-thread task, NAME MILLISECONDS, to this file", "file");
-    const QCommandLineOption panels("panels", "the panels to show: " + panelNames().join(", ") + ", all or none", "list");
-    const QCommandLineOption run("run", "after --steps, trace on to the next-miss (of --miss-reason, if given) or next-deferral, and focus on it", "goal");
-    const QCommandLineOption walk("walk", "quit once shown (with --tour: show every stop from --stop on in turn, then quit): for --frame-log");
-    for (const auto& o : {help, cache, order, width, height, steps, overlays, heatmap, screenshot, window, select, accel, band, record, every, zoom, large,
-                          present, compare, sceneView, orbit, spp, lightRadius, shadowSamples, gloss, glossSamples, seed,
-                          tour, stop, focus, missReason, frameLog, panels, run, walk})
-        p.addOption(o);
-    // --scene-view may come alone (the side view): give it its default value
-    QStringList argv = args;
-    for (int i = 1; i < argv.size(); ++i)
-        if (argv[i] == "--scene-view" && (i + 1 == argv.size() || !parseSceneAngle(argv[i + 1])))
-            argv[i] = "--scene-view=side";
-    if (!p.parse(argv)) {
-        message = p.errorText();
-        return ParseResult::Error;
+namespace {
+
+/// The command line's values as CLI11 reads them, before they become GuiOptions
+struct Flags {
+    std::vector<std::string> scenes;
+    std::string cache, order, accel, overlays, heatmap, screenshot, window, select, record, compare, sceneView,
+        orbit, tour, focus, missReason, frameLog, panels, run;
+    int width = 0, height = 0, stop = 0, band = rc::kAutoBand;
+    qint64 steps = -1, every = 10000;
+    double zoom = 1.0;
+    rc::Sampling sampling;
+    bool large = false, present = false, walk = false, noAhead = false;
+};
+
+QString q(const std::string& s) { return QString::fromStdString(s); }
+
+/// What renders: the options the CLI has too (cli/flag_definitions.h), then the GUI's own
+void declareRender(CLI::App& app, Flags& f) {
+    app.add_option("scene", f.scenes, "an .nff file or a built-in such as cube:4 (default cube:4)");
+    rc::cli::addCacheOption(&app, f.cache);
+    rc::cli::addOrderOption(&app, f.order);
+    rc::cli::addAccelOption(&app, f.accel, true);
+    rc::cli::addSizeOptions(&app, f.width, f.height);
+    rc::cli::addBandOption(&app, f.band);
+    rc::cli::addSamplingOptions(&app, f.sampling, true);
+    app.add_option("--seed", f.sampling.seed, "seed of distributed ray tracing's samples (default 1986)");
+    app.add_option("--steps", f.steps, "rays to trace before showing (screenshots: default 20000)")->check(CLI::NonNegativeNumber);
+    app.add_option("--compare", f.compare, "run a second render (another cache and order) in lockstep beside the first, e.g. none:scanline");
+}
+
+/// What is drawn, and where it goes: overlays, heatmap, views, screenshots, fonts
+void declareShow(CLI::App& app, Flags& f) {
+    app.add_option("--overlays", f.overlays, "cylinder,cone,frontier,misses,samples (or all, none, grid)");
+    app.add_option("--heatmap", f.heatmap, "none | tests | hitmiss | hitrate | order | beam");
+    app.add_option("--screenshot", f.screenshot, "write the window to this PNG and exit");
+    app.add_option("--window", f.window, "window size of screenshots (default 1600x1000)");
+    app.add_option("--select", f.select, "pixel to inspect, and which of its rays (a path such as eye/reflection/shadow 1; default its eye ray): x,y[:path]");
+    app.add_option("--zoom", f.zoom, "screenshots: zoom factor (relative to fitting the window) about the ray being traced, or the selected pixel")
+        ->check(rc::cli::finiteNumber())->check(CLI::Range(0.1, 200.0));
+    app.add_option("--record", f.record, "write a numbered PNG sequence of the fill (overlays on) to this folder, then exit");
+    app.add_option("--every", f.every, "--record: steps between frames (default 10000)")->check(CLI::PositiveNumber);
+    app.add_flag("--large-fonts", f.large, "bigger text, for a projector");
+    app.add_flag("--present", f.present, "presentation mode: the panels hidden, large fonts (F11 in the window)");
+    app.add_option("--scene-view", f.sceneView, "show the 3D scene beside the image: side (across the ray in focus, the paper's Figure 2), along (down the ray, Figure 1), top or front");
+    app.add_option("--orbit", f.orbit, "--scene-view: turn the view by YAW,PITCH degrees");
+}
+
+/// Lectures: tours, their stops, the frame log
+void declareLecture(CLI::App& app, Flags& f) {
+    app.add_option("--tour", f.tour, "open a tour: a JSON file of stops, each a caption and what to show (PageDown/PageUp move)");
+    app.add_option("--stop", f.stop, "--tour: the stop to open on, from 1 (default 1)")->check(CLI::Range(1, 100000));
+    app.add_option("--focus", f.focus, "fit the view to this image rectangle, in pixels: x0,y0,x1,y1");
+    app.add_option("--miss-reason", f.missReason, "Next miss stops only at misses of this reason (" + missReasonNames().join(", ").toStdString() + ")");
+    app.add_option("--frame-log", f.frameLog, "write one line per UI-thread task, NAME MILLISECONDS, to this file (with a tour, also stop-K-picture: from a stop asked for to its picture complete)");
+    app.add_option("--panels", f.panels, "the panels to show: " + panelNames().join(", ").toStdString() + ", all or none");
+    app.add_option("--run", f.run, "after --steps, trace on to the next-miss (of --miss-reason, if given) or next-deferral, and focus on it");
+    app.add_flag("--walk", f.walk, "quit once shown (with --tour: show every stop from --stop on in turn, then quit): for --frame-log");
+    app.add_flag("--no-render-ahead", f.noAhead, "--tour: render each stop only when it is reached, not while the one before is shown");
+}
+
+/// The render's choices: the registered names the shared options checked
+bool readRender(const Flags& f, GuiOptions& out, QString& message) {
+    if (f.scenes.size() > 1) {
+        message = "only one scene may be given";
+        return false;
     }
-    if (p.isSet(help)) {
-        message = p.helpText();
-        return ParseResult::Help;
+    if (!f.scenes.empty()) {
+        out.scene = q(f.scenes[0]);
+        out.sceneGiven = true;
     }
-    // Lectures: the tour and its stop, the frame log, the goal to run to, the panels, the focus
-    if (args.size() <= 1 || p.isSet(tour)) {
-        if (p.isSet(tour)) out.tour = p.value(tour);
-        if (p.isSet(stop) && (!p.isSet(tour) || !parseInt(p.value(stop), 1, 100000, out.stop))) {
-            message = p.isSet(tour) ? "--stop must be a stop number from 1" : "--stop needs --tour";
-            return ParseResult::Error;
+    if (!f.cache.empty()) out.cache = *rc::parseCacheKind(f.cache);
+    if (!f.order.empty()) out.order = *rc::parseOrderKind(f.order);
+    if (!f.accel.empty()) out.accel = *rc::parseAccelKind(f.accel);
+    out.width = f.width;
+    out.height = f.height;
+    out.band = f.band;
+    if (f.steps >= 0) out.steps = f.steps;
+    out.sampling = f.sampling;
+    if (!f.compare.empty() && !(out.compare = parseCompare(q(f.compare), message))) return false;
+    // What no single flag can check: the core's own, so the limits are the CLI's
+    if (const auto e = rc::samplingError(out.sampling, rc::ShadingOptions{}.maxDepth)) {
+        message = QString::fromStdString(*e);
+        return false;
+    }
+    return true;
+}
+
+/// --select x,y or x,y:path
+bool readSelect(const QString& v, GuiOptions& out, QString& message) {
+    QString pixel = v;
+    const int colon = int(v.indexOf(':'));
+    if (colon >= 0) {
+        out.selectPath = v.mid(colon + 1).trimmed();
+        pixel = v.left(colon);
+        if (out.selectPath.isEmpty()) {
+            message = "--select x,y:path needs a path after ':' (e.g. eye/reflection)";
+            return false;
         }
     }
-    if (p.isSet(frameLog)) out.frameLog = p.value(frameLog);
-    out.walk = p.isSet(walk);
-    if (p.isSet(run)) {
-        const QString v = p.value(run).trimmed().toLower();
+    int x = 0, y = 0;
+    if (!parsePair(pixel, ',', x, y)) {
+        message = "--select must be x,y or x,y:path, not '" + v + "'";
+        return false;
+    }
+    out.select = QPoint(x, y);
+    return true;
+}
+
+/// --scene-view ANGLE and --orbit YAW,PITCH
+bool readSceneView(const Flags& f, GuiOptions& out, QString& message) {
+    if (!f.sceneView.empty()) {
+        const auto a = parseSceneAngle(q(f.sceneView));
+        if (!a) {
+            message = "--scene-view must be side, along, top or front, not '" + q(f.sceneView) + "'";
+            return false;
+        }
+        out.sceneView = true;
+        out.sceneAngle = *a;
+    }
+    if (f.orbit.empty()) return true;
+    const QStringList parts = q(f.orbit).split(',');
+    bool ok1 = false, ok2 = false;
+    if (parts.size() == 2) {
+        out.orbitYaw = parts[0].toDouble(&ok1);
+        out.orbitPitch = parts[1].toDouble(&ok2);
+    }
+    if (!ok1 || !ok2 || std::abs(out.orbitYaw) > 360 || std::abs(out.orbitPitch) > 90) {
+        message = "--orbit must be YAW,PITCH in degrees (|yaw| <= 360, |pitch| <= 90), not '" + q(f.orbit) + "'";
+        return false;
+    }
+    return true;
+}
+
+/// What is drawn: overlays, heatmap, screenshots, window, selection, zoom, fonts, scene view
+bool readShow(const Flags& f, GuiOptions& out, QString& message) {
+    if (!f.overlays.empty()) {
+        const auto o = Overlays::parse(q(f.overlays));
+        if (!o) {
+            message = "--overlays takes a comma-separated list of cylinder, cone, frontier, misses, samples, grid, all, none";
+            return false;
+        }
+        out.overlays = *o;
+    }
+    if (!f.heatmap.empty()) {
+        const auto h = parseHeatmap(q(f.heatmap));
+        if (!h) {
+            message = "--heatmap must be none, tests, hitmiss, hitrate, order or beam";
+            return false;
+        }
+        out.heatmap = *h;
+    }
+    out.screenshot = q(f.screenshot);
+    out.record = q(f.record);
+    out.every = f.every;
+    if (!f.window.empty()) {
+        int w = 0, h = 0;
+        if (!parsePair(q(f.window).toLower(), 'x', w, h) || w < 200 || h < 200) {
+            message = "--window must be WxH, at least 200x200";
+            return false;
+        }
+        out.window = QSize(w, h);
+    }
+    if (!f.select.empty() && !readSelect(q(f.select), out, message)) return false;
+    out.zoom = f.zoom;
+    out.largeFonts = f.large;
+    out.present = f.present;
+    return readSceneView(f, out, message);
+}
+
+/// --panels LIST: names of panelNames(), all or none
+bool readPanels(const QString& v, GuiOptions& out, QString& message) {
+    const QString list = v.trimmed().toLower();
+    QStringList shown;
+    if (list == "all") shown = panelNames();
+    else if (list != "none")
+        for (const QString& name : list.split(',')) {
+            if (!panelNames().contains(name.trimmed())) {
+                message = "--panels takes a comma-separated list of " + panelNames().join(", ") + ", or all or none, not '" + name + "'";
+                return false;
+            }
+            shown << name.trimmed();
+        }
+    out.panels = shown;
+    return true;
+}
+
+/// --focus x0,y0,x1,y1 inside the largest image
+bool readFocus(const QString& v, GuiOptions& out, QString& message) {
+    const QStringList c = v.split(',');
+    int r[4] = {0, 0, 0, 0};
+    bool ok = c.size() == 4;
+    for (int i = 0; ok && i < 4; ++i) ok = parseInt(c[i].trimmed(), 0, kMaxSize, r[i]);
+    if (!ok || r[2] <= r[0] || r[3] <= r[1]) {
+        message = "--focus must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '" + v + "'";
+        return false;
+    }
+    out.focus = QRect(QPoint(r[0], r[1]), QPoint(r[2] - 1, r[3] - 1));
+    return true;
+}
+
+/// Lectures: the tour and its stop, the frame log, the goal to run to, the panels, the focus
+bool readLecture(const Flags& f, bool noArguments, GuiOptions& out, QString& message) {
+    out.tour = q(f.tour);
+    if (f.stop > 0) {
+        if (f.tour.empty()) {
+            message = "--stop needs --tour";
+            return false;
+        }
+        out.stop = f.stop;
+    }
+    out.frameLog = q(f.frameLog);
+    out.walk = f.walk;
+    out.renderAhead = !f.noAhead;
+    if (!f.run.empty()) {
+        const QString v = q(f.run).trimmed().toLower();
         if (v == "next-miss") out.runTo = rc::RunGoal::NextMiss;
         else if (v == "next-deferral") out.runTo = rc::RunGoal::NextDeferral;
-        else { message = "--run must be next-miss or next-deferral, not '" + p.value(run) + "'"; return ParseResult::Error; }
-    }
-    if (p.isSet(panels)) {
-        const QString v = p.value(panels).trimmed().toLower();
-        QStringList shown;
-        if (v == "all") shown = panelNames();
-        else if (v != "none")
-            for (const QString& name : v.split(',')) {
-                if (!panelNames().contains(name.trimmed())) {
-                    message = "--panels takes a comma-separated list of " + panelNames().join(", ") + ", or all or none, not '" + name + "'";
-                    return ParseResult::Error;
-                }
-                shown << name.trimmed();
-            }
-        out.panels = shown;
-    }
-    if (p.isSet(focus)) {
-        const QStringList c = p.value(focus).split(',');
-        int v[4] = {0, 0, 0, 0};
-        bool ok = c.size() == 4;
-        for (int i = 0; ok && i < 4; ++i) ok = parseInt(c[i].trimmed(), 0, kMaxSize, v[i]);
-        if (!ok || v[2] <= v[0] || v[3] <= v[1]) {
-            message = "--focus must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '" + p.value(focus) + "'";
-            return ParseResult::Error;
+        else {
+            message = "--run must be next-miss or next-deferral, not '" + q(f.run) + "'";
+            return false;
         }
-        out.focus = QRect(QPoint(v[0], v[1]), QPoint(v[2] - 1, v[3] - 1));
     }
-    if (p.isSet(missReason)) {
+    if (!f.panels.empty() && !readPanels(q(f.panels), out, message)) return false;
+    if (!f.focus.empty() && !readFocus(q(f.focus), out, message)) return false;
+    if (!f.missReason.empty()) {
         const QStringList names = missReasonNames();
-        const int i = int(names.indexOf(p.value(missReason).trimmed().toLower()));
-        if (i < 0) { message = "--miss-reason must be " + oneOf(names) + ", not '" + p.value(missReason) + "'"; return ParseResult::Error; }
+        const int i = int(names.indexOf(q(f.missReason).trimmed().toLower()));
+        if (i < 0) {
+            message = "--miss-reason must be " + oneOf(names) + ", not '" + q(f.missReason) + "'";
+            return false;
+        }
         out.missReason = rc::MissReason(i + 1);
     }
     // No arguments: the first impression
-    if (args.size() <= 1) {
+    if (noArguments) {
         out.firstImpression = true;
         out.steps = kFirstImpressionSteps;
         out.overlays = *Overlays::parse("cylinder,cone,frontier");
     }
-    // The scene
-    const QStringList pos = p.positionalArguments();
-    if (pos.size() > 1) {
-        message = "only one scene may be given";
+    return true;
+}
+
+}  // namespace
+
+ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message) {
+    // Declare the options, in the groups the help lists
+    CLI::App app("RayCache: step through ray tracing ray by ray, with Hanrahan's (1986) blocker lists,\n"
+                 "Speer-DeRose-Barsky cylinders of safety and the breadth-first frontier drawn on the image.\n"
+                 "With no display (and no QT_QPA_PLATFORM), renders headless to a PNG and exits.",
+                 "raycache-gui");
+    Flags f;
+    declareRender(app, f);
+    declareShow(app, f);
+    declareLecture(app, f);
+    // --scene-view may come alone (the side view): give it its default value. CLI11 reads
+    // its arguments last first.
+    std::vector<std::string> argv;
+    for (int i = 1; i < args.size(); ++i) {
+        const bool alone = args[i] == "--scene-view" && (i + 1 == args.size() || !parseSceneAngle(args[i + 1]));
+        argv.push_back(alone ? "--scene-view=side" : args[i].toStdString());
+    }
+    std::reverse(argv.begin(), argv.end());
+    try {
+        app.parse(argv);
+    } catch (const CLI::CallForHelp&) {
+        message = QString::fromStdString(app.help());
+        return ParseResult::Help;
+    } catch (const CLI::ParseError& e) {
+        message = QString::fromStdString(e.what());
         return ParseResult::Error;
     }
-    if (pos.size() == 1) {
-        out.scene = pos[0];
-        out.sceneGiven = true;
-    }
-    // What renders: cache, order, image size, steps
-    if (p.isSet(cache)) {
-        const auto k = rc::parseCacheKind(p.value(cache).toStdString());
-        if (!k) { message = "--cache must be " + oneOf(cacheNames()) + ", not '" + p.value(cache) + "'"; return ParseResult::Error; }
-        out.cache = *k;
-    }
-    if (p.isSet(order)) {
-        const auto k = rc::parseOrderKind(p.value(order).toStdString());
-        if (!k) { message = "--order must be " + oneOf(orderNames()) + ", not '" + p.value(order) + "'"; return ParseResult::Error; }
-        out.order = *k;
-    }
-    // The command line's limit (rc::NffLimits::maxResolution), not one of the GUI's own
-    const QString sizeRange = QString("[1, %1]").arg(kMaxSize);
-    if (p.isSet(width) && !parseInt(p.value(width), 1, kMaxSize, out.width)) { message = "--width must be an integer in " + sizeRange; return ParseResult::Error; }
-    if (p.isSet(height) && !parseInt(p.value(height), 1, kMaxSize, out.height)) { message = "--height must be an integer in " + sizeRange; return ParseResult::Error; }
-    if (p.isSet(steps)) {
-        bool ok = false;
-        out.steps = p.value(steps).toLongLong(&ok);
-        if (!ok || out.steps < 0) { message = "--steps must be a non-negative integer"; return ParseResult::Error; }
-    }
-    // What is drawn: overlays and heatmap
-    if (p.isSet(overlays)) {
-        const auto o = Overlays::parse(p.value(overlays));
-        if (!o) { message = "--overlays takes a comma-separated list of cylinder, cone, frontier, misses, samples, grid, all, none"; return ParseResult::Error; }
-        out.overlays = *o;
-    }
-    if (p.isSet(heatmap)) {
-        const auto h = parseHeatmap(p.value(heatmap));
-        if (!h) { message = "--heatmap must be none, tests, hitmiss, hitrate, order or beam"; return ParseResult::Error; }
-        out.heatmap = *h;
-    }
-    // Screenshots and recordings
-    if (p.isSet(screenshot)) out.screenshot = p.value(screenshot);
-    if (p.isSet(record)) out.record = p.value(record);
-    if (p.isSet(every)) {
-        bool ok = false;
-        out.every = p.value(every).toLongLong(&ok);
-        if (!ok || out.every < 1) { message = "--every must be a positive integer"; return ParseResult::Error; }
-    }
-    if (p.isSet(window)) {
-        int w = 0, h = 0;
-        if (!parsePair(p.value(window).toLower(), 'x', w, h) || w < 200 || h < 200) { message = "--window must be WxH, at least 200x200"; return ParseResult::Error; }
-        out.window = QSize(w, h);
-    }
-    // The pixel and ray in focus, the complete search, the zoom
-    if (p.isSet(select)) {
-        int x = 0, y = 0;
-        QString v = p.value(select);
-        const int colon = int(v.indexOf(':'));
-        if (colon >= 0) {
-            out.selectPath = v.mid(colon + 1).trimmed();
-            v = v.left(colon);
-            if (out.selectPath.isEmpty()) { message = "--select x,y:path needs a path after ':' (e.g. eye/reflection)"; return ParseResult::Error; }
-        }
-        if (!parsePair(v, ',', x, y)) { message = "--select must be x,y or x,y:path, not '" + p.value(select) + "'"; return ParseResult::Error; }
-        out.select = QPoint(x, y);
-    }
-    if (p.isSet(accel)) {
-        const auto k = rc::parseAccelKind(p.value(accel).toStdString());
-        if (!k || rc::searchRegistry()[std::size_t(*k)].comparisonOnly) { message = "--accel must be " + oneOf(searchNames()) + ", not '" + p.value(accel) + "'"; return ParseResult::Error; }
-        out.accel = *k;
-    }
-    if (p.isSet(band) && !parseInt(p.value(band), 0, 100000, out.band)) {
-        message = "--band must be a whole number of scanlines >= 0 (0: the whole image), not '" + p.value(band) + "'";
+    if (!readRender(f, out, message) || !readShow(f, out, message) || !readLecture(f, args.size() <= 1, out, message))
         return ParseResult::Error;
-    }
-    if (p.isSet(zoom)) {
-        bool ok = false;
-        out.zoom = p.value(zoom).toDouble(&ok);
-        if (!ok || out.zoom < 0.1 || out.zoom > 200) { message = "--zoom must be a number in [0.1, 200]"; return ParseResult::Error; }
-    }
-    // Presentation, the compared render, the scene view
-    out.largeFonts = p.isSet(large);
-    out.present = p.isSet(present);
-    if (p.isSet(compare)) {
-        out.compare = parseCompare(p.value(compare), message);
-        if (!out.compare) return ParseResult::Error;
-    }
-    if (p.isSet(sceneView)) {
-        const auto a = parseSceneAngle(p.value(sceneView));
-        if (!a) { message = "--scene-view must be side, along, top or front, not '" + p.value(sceneView) + "'"; return ParseResult::Error; }
-        out.sceneView = true;
-        out.sceneAngle = *a;
-    }
-    if (p.isSet(orbit)) {
-        const QStringList parts = p.value(orbit).split(',');
-        bool ok1 = false, ok2 = false;
-        if (parts.size() == 2) {
-            out.orbitYaw = parts[0].toDouble(&ok1);
-            out.orbitPitch = parts[1].toDouble(&ok2);
-        }
-        if (!ok1 || !ok2 || std::abs(out.orbitYaw) > 360 || std::abs(out.orbitPitch) > 90) {
-            message = "--orbit must be YAW,PITCH in degrees (|yaw| <= 360, |pitch| <= 90), not '" + p.value(orbit) + "'";
-            return ParseResult::Error;
-        }
-    }
-    // Distributed ray tracing: the core's own check, so the limits are the CLI's
-    auto number = [&](const QCommandLineOption& o, double& v) {
-        if (!p.isSet(o)) return true;
-        bool ok = false;
-        v = p.value(o).toDouble(&ok);
-        if (!ok) message = "--" + o.names().front() + " must be a number, not '" + p.value(o) + "'";
-        return ok;
-    };
-    auto count = [&](const QCommandLineOption& o, int& v) {
-        if (!p.isSet(o)) return true;
-        bool ok = false;
-        v = p.value(o).toInt(&ok);
-        if (!ok) message = "--" + o.names().front() + " must be a whole number, not '" + p.value(o) + "'";
-        return ok;
-    };
-    rc::Sampling& sm = out.sampling;
-    if (!count(spp, sm.spp) || !number(lightRadius, sm.lightRadius) || !count(shadowSamples, sm.shadowSamples) ||
-        !number(gloss, sm.glossDegrees) || !count(glossSamples, sm.glossSamples))
-        return ParseResult::Error;
-    if (p.isSet(seed)) {
-        bool ok = false;
-        sm.seed = p.value(seed).toULongLong(&ok);
-        if (!ok) { message = "--seed must be a whole number >= 0"; return ParseResult::Error; }
-    }
-    if (const auto e = rc::samplingError(sm, rc::ShadingOptions{}.maxDepth)) {
-        message = QString::fromStdString(*e);
-        return ParseResult::Error;
-    }
     return ParseResult::Ok;
+}
+
+rc::RenderOptions renderOptionsOf(const GuiOptions& o) {
+    rc::RenderOptions r;
+    r.cache = o.cache;
+    r.order = o.order;
+    r.accel = o.accel;
+    r.band = o.band;
+    r.shading.sampling = o.sampling;
+    r.width = std::max(0, o.width);
+    r.height = std::max(0, o.height);
+    return r;
+}
+
+rc::RenderOptions sizedOptions(rc::RenderOptions o, int longerSide, const rc::Scene* scene) {
+    if (longerSide >= 0 && scene) {
+        o.width = o.height = 0;
+        if (longerSide > 0) {
+            const int w = scene->camera.width, h = scene->camera.height;
+            const double longer = std::max(w, h);
+            o.width = std::max(1, int(std::lround(longerSide * w / longer)));
+            o.height = std::max(1, int(std::lround(longerSide * h / longer)));
+        }
+    }
+    return o;
 }
 
 std::optional<GuiOptions> stopOptions(const rc::Tour& tour, int stop, const GuiOptions& base, QString& message) {
@@ -372,6 +416,7 @@ std::optional<GuiOptions> stopOptions(const rc::Tour& tour, int stop, const GuiO
     if (!o.panels) o.panels = QStringList();
     // What the command line chose for the whole run stays: window, fonts, outputs
     o.walk = base.walk;
+    o.renderAhead = base.renderAhead;
     o.window = base.window;
     o.largeFonts = base.largeFonts;
     o.present = base.present;

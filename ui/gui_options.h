@@ -77,10 +77,18 @@ struct GuiOptions {
     /// --run next-miss|next-deferral: after the steps, trace on to the next such ray and focus on it
     std::optional<rc::RunGoal> runTo;
     bool walk = false;           ///< --walk: quit when shown (with --tour: after every stop in turn)
+    bool renderAhead = true;     ///< a tour's next stop rendered while this one is shown (--no-render-ahead: not)
     /// No arguments at all: open on a partly traced image with a hit ray in focus, its
     /// hull, blockers and the frontier shown (the paper at a glance).
     bool firstImpression = false;
 };
+
+/// The render `o` asks for: cache, order, search, band, samples and size (0 x 0: the scene's).
+rc::RenderOptions renderOptionsOf(const GuiOptions& o);
+
+/// `o` at the size the Size box chose: `longerSide` (the scene's aspect kept), the scene's
+/// own (0), or `o`'s (< 0).
+rc::RenderOptions sizedOptions(rc::RenderOptions o, int longerSide, const rc::Scene* scene);
 
 /// The outcome of parsing.
 enum class ParseResult { Ok, Help, Error };

@@ -79,6 +79,19 @@ void SessionController::clear() {
     emit changed();
 }
 
+std::unique_ptr<rc::SessionState> SessionController::take() {
+    cancel();
+    wait();
+    return std::move(state_);
+}
+
+void SessionController::adopt(std::unique_ptr<rc::SessionState> state) {
+    cancel();
+    wait();
+    state_ = std::move(state);
+    emit changed();
+}
+
 bool SessionController::stepRay() {
     if (busy_ || !state_) return false;
     const bool more = state_->step();

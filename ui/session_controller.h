@@ -34,6 +34,10 @@ public:
 
     /// Stops any worker and drops the state (state() is null afterwards).
     void clear();
+    /// Stops any worker where it is and hands the state over (null if there is none).
+    std::unique_ptr<rc::SessionState> take();
+    /// Makes `state` (a render made elsewhere, e.g. by another controller) the render.
+    void adopt(std::unique_ptr<rc::SessionState> state);
     /// Traces one ray on the calling (GUI) thread. False if busy or done.
     bool stepRay();
     /// Runs towards `goal` on a worker thread. False if busy.

@@ -74,10 +74,16 @@ void StatsPanel::showProgress(qint64 steps, double progress) {
     text_->setText(QString("running… %1 steps, %2% of the eye rays").arg(steps).arg(progress * 100.0, 0, 'f', 1));
 }
 
+namespace {
+// The chart is laid out again at most this often while a render runs (the costliest part of a refresh)
+constexpr qint64 kChartEveryMs = 500;
+// The axes reach this much above the largest value, so that its curve does not run along the frame
+constexpr double kAxisHeadroom = 1.05;
+}  // namespace
+
 QString StatsPanel::summaryText() const { return text_->text(); }
 
-void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* other) {
-    if (!state) return;
+QString StatsPanel::countsText(const rc::SessionState* state) {
     const rc::RenderSession& s = state->session();
     // The counts: rays, tests, searches, hits, misses
     const rc::Counters& n = s.counters();
@@ -115,43 +121,51 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
     // What this scene and these options leave out (no shadow rays without lights, ...)
     for (const std::string& line : rc::leftOut(s.scene(), &s.options()))
         t += QString("<br><b>left out</b> %1").arg(QString::fromStdString(line).toHtmlEscaped());
-    // A compared render: both side by side, and how many tests the second makes more;
-    // first, so that it shows without scrolling
-    if (other) {
-        const QString own = t;
-        t.clear();
-        const rc::RenderSession& o = other->session();
-        const rc::Counters& m = o.counters();
-        auto name = [](const rc::RenderSession& r) {
-            return QString("%1/%2").arg(text(rc::toString(r.options().cache))).arg(text(rc::toString(r.options().order)));
-        };
-        auto row = [](const QString& what, double a, double b) {
-            const double d = b - a;
-            return QString("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4%5</td></tr>")
-                .arg(what).arg(a, 0, 'f', 0).arg(b, 0, 'f', 0).arg(d > 0 ? "+" : "").arg(d, 0, 'f', 0);
-        };
-        t += QString("<b>compared</b> at step %1%2<table cellspacing=0 cellpadding=2>"
-                     "<tr><th></th><th>%3</th><th>%4</th><th>difference</th></tr>")
-                 .arg(o.steps()).arg(o.steps() == s.steps() ? "" : QString(" (catching up to %1)").arg(s.steps()))
-                 .arg(name(s), name(o));
-        t += row("tests", double(n.intersectionTests), double(m.intersectionTests));
-        t += row("complete searches", double(n.completeSearches), double(m.completeSearches));
-        t += row("hits", double(n.hits), double(m.hits));
-        t += row("misses", double(n.misses), double(m.misses));
-        t += row("deferrals", double(n.deferrals), double(m.deferrals));
-        t += "</table>";
-        if (n.intersectionTests > 0)
-            t += QString("tests: %1x the left").arg(double(m.intersectionTests) / double(n.intersectionTests), 0, 'f', 2);
-        t += "<br>" + own;
-    }
-    text_->setText(t);
+    return t;
+}
+
+QString StatsPanel::comparedText(const rc::SessionState* state, const rc::SessionState* other) {
+    // A compared render: both side by side, and how many tests the second makes more
+    const rc::RenderSession& s = state->session();
+    const rc::Counters& n = s.counters();
+    QString t;
+    const rc::RenderSession& o = other->session();
+    const rc::Counters& m = o.counters();
+    auto name = [](const rc::RenderSession& r) {
+        return QString("%1/%2").arg(text(rc::toString(r.options().cache))).arg(text(rc::toString(r.options().order)));
+    };
+    auto row = [](const QString& what, double a, double b) {
+        const double d = b - a;
+        return QString("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4%5</td></tr>")
+            .arg(what).arg(a, 0, 'f', 0).arg(b, 0, 'f', 0).arg(d > 0 ? "+" : "").arg(d, 0, 'f', 0);
+    };
+    t += QString("<b>compared</b> at step %1%2<table cellspacing=0 cellpadding=2>"
+                 "<tr><th></th><th>%3</th><th>%4</th><th>difference</th></tr>")
+             .arg(o.steps()).arg(o.steps() == s.steps() ? "" : QString(" (catching up to %1)").arg(s.steps()))
+             .arg(name(s), name(o));
+    t += row("tests", double(n.intersectionTests), double(m.intersectionTests));
+    t += row("complete searches", double(n.completeSearches), double(m.completeSearches));
+    t += row("hits", double(n.hits), double(m.hits));
+    t += row("misses", double(n.misses), double(m.misses));
+    t += row("deferrals", double(n.deferrals), double(m.deferrals));
+    t += "</table>";
+    if (n.intersectionTests > 0)
+        t += QString("tests: %1x the left").arg(double(m.intersectionTests) / double(n.intersectionTests), 0, 'f', 2);
+    return t;
+}
+
+void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* other) {
+    if (!state) return;
+    // A compared render first, so that it shows without scrolling
+    const QString own = countsText(state);
+    text_->setText(other ? comparedText(state, other) + "<br>" + own : own);
     // The chart at most twice a second (and whenever the render is done): relaying it out
     // is the costliest thing a refresh does
-    if (throttled_ && !s.done() && chartClock_.isValid() && chartClock_.elapsed() < 500) {
+    if (throttled_ && !state->session().done() && chartClock_.isValid() && chartClock_.elapsed() < kChartEveryMs) {
         // Asks for a refresh when the half second is up, so the chart ends on the last state
         if (!chartDue_) {
             chartDue_ = true;
-            QTimer::singleShot(std::max<qint64>(1, 500 - chartClock_.elapsed()), this, [this] {
+            QTimer::singleShot(std::max<qint64>(1, kChartEveryMs - chartClock_.elapsed()), this, [this] {
                 chartDue_ = false;
                 emit chartDue();
             });
@@ -159,7 +173,12 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
         return;
     }
     chartClock_.start();
+    refreshChart(state, other);
+}
 
+void StatsPanel::refreshChart(const rc::SessionState* state, const rc::SessionState* other) {
+    const rc::RenderSession& s = state->session();
+    const rc::Counters& n = s.counters();
     // A chart a few hundred pixels wide shows no more points than that: every k-th sample
     constexpr std::size_t kPoints = 100;
     auto stride = [](std::size_t n) { return std::max<std::size_t>(1, (n + kPoints - 1) / kPoints); };
@@ -190,8 +209,8 @@ void StatsPanel::refresh(const rc::SessionState* state, const rc::SessionState* 
         mostTests = std::max(mostTests, double(other->session().counters().intersectionTests));
     }
     axisX_->setRange(0, std::max<double>(1.0, double(s.steps())));
-    axisY_->setRange(0, std::max<double>(1.0, double(std::max(n.hits, n.misses)) * 1.05));
-    axisTests_->setRange(0, std::max<double>(1.0, mostTests * 1.05));
+    axisY_->setRange(0, std::max<double>(1.0, double(std::max(n.hits, n.misses)) * kAxisHeadroom));
+    axisTests_->setRange(0, std::max<double>(1.0, mostTests * kAxisHeadroom));
     // Round ticks, each label different (no "0 0 1 1 1" on small ranges)
     for (QValueAxis* a : {axisX_, axisY_, axisTests_}) {
         a->setTickCount(5);

@@ -44,6 +44,13 @@ public:
     void showProgress(qint64 steps, double progress);
 
 private:
+    /// The counts of `state`: rays, tests, searches, hits, misses, and what RayCache's
+    /// caches and orders did beyond them (rich text).
+    QString countsText(const rc::SessionState* state);
+    /// `state` and `other` side by side, and the difference (rich text).
+    QString comparedText(const rc::SessionState* state, const rc::SessionState* other);
+    /// The chart of hits, misses and tests against steps (and `other`'s tests).
+    void refreshChart(const rc::SessionState* state, const rc::SessionState* other);
     QElapsedTimer chartClock_;  ///< since the chart was last updated
     bool chartDue_ = false;     ///< a chartDue() is on its way
     bool throttled_ = false;

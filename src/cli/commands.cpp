@@ -1,4 +1,5 @@
 #include "cli/commands.h"
+#include "cli/flag_definitions.h"
 #include "cli/image_hash.h"
 
 #include <cerrno>
@@ -32,17 +33,6 @@
 namespace rc::cli {
 
 namespace {
-/// "a | b (what b is) | ...": a registry's names and descriptions, for a flag's help
-template <class Entry>
-std::string choices(const Registry<Entry>& r) {
-    std::string out;
-    for (const Entry& e : r.entries()) {
-        if (!out.empty()) out += " | ";
-        out += e.name + " (" + e.description + ")";
-    }
-    return out;
-}
-
 // The signal (SIGINT, SIGTERM) that asked a render to stop, 0 when none did
 volatile std::sig_atomic_t gStopSignal = 0;
 void onStopSignal(int sig) { gStopSignal = sig; }
@@ -80,17 +70,13 @@ const CLI::Validator& outputFile() {
 
 void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     RenderFlags& f = *this;
+    // The options the GUI shares (cli/flag_definitions.h)
     if (cacheAndOrder) {
-        // The registries' names (search/cache_registry.h, order/order_registry.h)
-        c->add_option("--cache", f.cache, choices(cacheRegistry()))
-            ->check(CLI::IsMember(cacheNames()))->capture_default_str();
-        c->add_option("--order", f.order, choices(orderRegistry()))
-            ->check(CLI::IsMember(orderNames()))->capture_default_str();
+        addCacheOption(c, f.cache)->capture_default_str();
+        addOrderOption(c, f.order)->capture_default_str();
     }
-    c->add_option("--accel", f.accel, "complete search: " + choices(searchRegistry()))
-        ->check(CLI::IsMember(searchNames()))->capture_default_str();
-    c->add_option("--width", f.width, "image width (default: the scene's)")->check(CLI::Range(1, int(NffLimits::maxResolution)));
-    c->add_option("--height", f.height, "image height (default: the scene's)")->check(CLI::Range(1, int(NffLimits::maxResolution)));
+    addAccelOption(c, f.accel, false)->capture_default_str();
+    addSizeOptions(c, f.width, f.height);
     c->add_option("--depth", f.depth, "maximum ray-tree depth; the eye ray is depth 1")
         ->check(CLI::Range(1, 64))->capture_default_str();
     c->add_option("--cutoff", f.cutoff, "rays whose weight is below this are not spawned (0: off)")
@@ -100,38 +86,14 @@ void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
             return std::isnan(std::strtod(s.c_str(), nullptr)) ? "NaN is not a number from 0 to 1" : "";
         }, "", "NotNaN"))
         ->capture_default_str();
-    c->add_option("--band", f.band,
-                  "scanlines per band in bfs and progressive orders (0: whole image; default: 8 in front of "
-                  "the linear scan for a cache that defers its misses (cylinder, blocker, blocker+), else 1)")
-        ->check(CLI::Range(0, int(NffLimits::maxResolution)));
+    addBandOption(c, f.band);
     c->add_option("--seed", f.seed, "seed of the built-in scenes' jitter and of distributed ray tracing's samples")
         ->capture_default_str();
 }
 
-namespace {
-// CLI::Range lets NaN through (no comparison with NaN is true), and inf through an open top
-const CLI::Validator& finiteNumber() {
-    static const CLI::Validator v([](std::string& s) -> std::string {
-        return std::isfinite(std::strtod(s.c_str(), nullptr)) ? "" : "'" + s + "' is not a finite number";
-    }, "", "Finite");
-    return v;
-}
-}  // namespace
-
 void RenderFlags::addSamplingTo(CLI::App* c, bool spp) {
     // [sampling-flags]
-    Sampling& s = sampling;
-    if (spp)
-        c->add_option("--spp", s.spp, "pixel samples, stratified and jittered (distributed ray tracing)")
-            ->check(CLI::Range(1, kMaxSpp))->capture_default_str();
-    c->add_option("--light-radius", s.lightRadius, "lights become spheres of this radius: soft shadows (0: points)")
-        ->check(finiteNumber())->check(CLI::NonNegativeNumber)->capture_default_str();
-    c->add_option("--shadow-samples", s.shadowSamples, "shadow rays per light and hit when --light-radius > 0")
-        ->check(CLI::Range(1, kMaxShadowSamples))->capture_default_str();
-    c->add_option("--gloss", s.glossDegrees, "half-angle in degrees of the cone of glossy reflections (0: mirror)")
-        ->check(finiteNumber())->check(CLI::Range(0.0, kMaxGlossDegrees))->capture_default_str();
-    c->add_option("--gloss-samples", s.glossSamples, "reflection rays per hit when --gloss > 0")
-        ->check(CLI::Range(1, kMaxGlossSamples))->capture_default_str();
+    addSamplingOptions(c, sampling, spp);
     c->add_option("--sample-entries", sampleEntries,
                   "cache entries of samples: per-sample (one per path and sample index) | shared")
         ->check(CLI::IsMember({"per-sample", "shared"}))->capture_default_str();

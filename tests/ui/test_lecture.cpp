@@ -86,8 +86,8 @@ TEST_CASE("A bad stop is reported at its place in the tour file", "[gui][tour]")
     QString why;
     REQUIRE(stopOptions(tour, 1, GuiOptions{}, why));
     REQUIRE_FALSE(stopOptions(tour, 2, GuiOptions{}, why));
-    REQUIRE(why.startsWith("t.json:3:3: stop 2 (Bad): --cache must be"));
-    REQUIRE(why.contains("'lru'"));
+    REQUIRE(why.startsWith("t.json:3:3: stop 2 (Bad): --cache"));  // the CLI's words (CLI11)
+    REQUIRE(why.contains("lru"));
 }
 
 TEST_CASE("PageDown and PageUp move between stops, R brings a stop back as written", "[gui][tour]") {
@@ -306,7 +306,7 @@ TEST_CASE("The frame log (--frame-log) writes one line per UI-thread task, first
     gui.start(RAYCACHE_GUI, {"--tour", bad.fileName(), "--screenshot", dir.filePath("bad.png")});
     REQUIRE(gui.waitForFinished(60000));
     REQUIRE(gui.exitCode() == 2);
-    REQUIRE(QString::fromUtf8(gui.readAllStandardError()).contains(bad.fileName() + ":2:3: stop 1 (x): --zoom must be"));
+    REQUIRE(QString::fromUtf8(gui.readAllStandardError()).contains(bad.fileName() + ":2:3: stop 1 (x): --zoom"));
 }
 
 TEST_CASE("The event log holds the newest rays of a long render, a bounded number of rows", "[gui][stall]") {
