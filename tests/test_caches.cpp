@@ -507,7 +507,7 @@ TEST_CASE("a direction list holds every object a ray leaving its site in its cel
             const Vec3 d = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
             const int site = id >= 0 ? sites.pointSite(id, o) : sites.eyeSite();
             std::uint32_t memo = std::uint32_t(-1);
-            const BlockerList& list = directions.get(site, d, memo, n);
+            const DirectionList& list = directions.get(site, d, memo, n);
             REQUIRE(list.origin == site);
             REQUIRE(list.target == DirectionLists::cell(d, site == sites.eyeSite() ? DirectionLists::kEyeCellsPerSide
                                                                                      : DirectionLists::kCellsPerSide));
@@ -634,11 +634,11 @@ TEST_CASE("a direction list picked from its site's order is the list the cull fi
                 d = glm::normalize(d);
                 REQUIRE(DirectionLists::cell(d, side) == cell);
                 std::uint32_t m1 = std::uint32_t(-1), m2 = std::uint32_t(-1);
-                const BlockerList& a = picked.get(site, d, m1, n);
-                const BlockerList& b = culled.get(site, d, m2, n);
+                const DirectionList& a = picked.get(site, d, m1, n);
+                const DirectionList& b = culled.get(site, d, m2, n);
                 INFO(spec << ": site " << site << " cell " << cell);
-                REQUIRE(a.ids == b.ids);
-                REQUIRE(a.reach == b.reach);
+                REQUIRE(std::ranges::equal(a.ids, b.ids));
+                REQUIRE(std::ranges::equal(a.reach, b.reach));
                 ++compared;
                 entries += a.ids.size();
             }
