@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
+#include <bit>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RC_CELL_AVX2 1
+#include <immintrin.h>
+#endif
 
 namespace rc {
 
@@ -58,6 +63,58 @@ struct CellCull final : SphereCull {
     std::vector<std::pair<double, int>>& out;
 };
 }  // namespace
+
+namespace {
+/// The quick test of one object: 0 clearly outside, 1 too near the edge to tell, 2 clearly inside
+inline int quickVerdict(const DirectionLists::QuickCone& c, float x, float y, float z, float cosB, float sinB) {
+    const float aim = x * c.ax + y * c.ay + z * c.az, edge = c.cosA * cosB - c.sinA * sinB;
+    return (aim >= edge - 1e-4f) + (aim >= edge + 1e-4f);
+}
+
+#ifdef RC_CELL_AVX2
+/// Eight objects at a time, each as quickVerdict() computes it (no fused multiply-add: this
+/// function's target has none), from `begin` (a multiple of 64) to the last whole eight
+__attribute__((target("avx2"))) std::size_t quickEights(const DirectionLists::QuickCone& c, const float* x,
+                                                        const float* y, const float* z, const float* cosB,
+                                                        const float* sinB, std::size_t count, std::uint64_t* maybe,
+                                                        std::uint64_t* sure) {
+    const __m256 ax = _mm256_set1_ps(c.ax), ay = _mm256_set1_ps(c.ay), az = _mm256_set1_ps(c.az);
+    const __m256 cosA = _mm256_set1_ps(c.cosA), sinA = _mm256_set1_ps(c.sinA), margin = _mm256_set1_ps(1e-4f);
+    std::size_t k = 0;
+    for (; k + 8 <= count; k += 8) {
+        const __m256 aim = _mm256_add_ps(
+            _mm256_add_ps(_mm256_mul_ps(_mm256_loadu_ps(x + k), ax), _mm256_mul_ps(_mm256_loadu_ps(y + k), ay)),
+            _mm256_mul_ps(_mm256_loadu_ps(z + k), az));
+        const __m256 edge = _mm256_sub_ps(_mm256_mul_ps(cosA, _mm256_loadu_ps(cosB + k)),
+                                          _mm256_mul_ps(sinA, _mm256_loadu_ps(sinB + k)));
+        const auto low = std::uint64_t(_mm256_movemask_ps(_mm256_cmp_ps(aim, _mm256_sub_ps(edge, margin), _CMP_GE_OQ)));
+        const auto high = std::uint64_t(_mm256_movemask_ps(_mm256_cmp_ps(aim, _mm256_add_ps(edge, margin), _CMP_GE_OQ)));
+        maybe[k / 64] |= low << (k % 64);
+        sure[k / 64] |= high << (k % 64);
+    }
+    return k;
+}
+#endif
+}  // namespace
+
+void DirectionLists::quickTest(const QuickCone& c, const float* x, const float* y, const float* z,
+                               const float* cosB, const float* sinB, std::size_t count, std::uint64_t* maybe,
+                               std::uint64_t* sure, bool simd) {
+    std::fill(maybe, maybe + (count + 63) / 64, 0);
+    std::fill(sure, sure + (count + 63) / 64, 0);
+    std::size_t k = 0;
+#ifdef RC_CELL_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (simd && avx2) k = quickEights(c, x, y, z, cosB, sinB, count, maybe, sure);
+#else
+    (void)simd;
+#endif
+    for (; k < count; ++k) {
+        const int v = quickVerdict(c, x[k], y[k], z[k], cosB[k], sinB[k]);
+        maybe[k / 64] |= std::uint64_t(v >= 1) << (k % 64);
+        sure[k / 64] |= std::uint64_t(v == 2) << (k % 64);
+    }
+}
 
 DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites,
                                bool siteOrders)
@@ -188,34 +245,23 @@ void DirectionLists::build(DirectionList& list, int site, int cell, Counters& n)
         // precision, with a margin a thousand times its rounding, the quick test keeps every
         // object the exact distance keeps and drops every other one, but for those near
         // the cone's edge, which the exact distance decides
-        const float ax = float(cone.axis.x), ay = float(cone.axis.y), az = float(cone.axis.z);
-        const float cosA = float(cone.cosHalf), sinAf = float(sinA);
-        const std::size_t count = bounds_.size();
-        const float *x = aimX_ + at, *y = aimY_ + at, *z = aimZ_ + at;
-        const float *cosB = aimCos_ + at, *sinB = aimSin_ + at;
-        kept_.resize(count);
-        unsigned char* kept = kept_.data();
-        // 0: clearly outside, 2: clearly inside, 1: too near the edge to tell (the exact distance tells)
-        for (std::size_t k = 0; k < count; ++k) {  // no branch: the compiler tests several at once
-            const float aim = x[k] * ax + y[k] * ay + z[k] * az, edge = cosA * cosB[k] - sinAf * sinB[k];
-            kept[k] = (unsigned char)((aim >= edge - 1e-4f) + (aim >= edge + 1e-4f));
-        }
+        const QuickCone quick{float(cone.axis.x), float(cone.axis.y), float(cone.axis.z), float(cone.cosHalf),
+                              float(sinA)};
+        const std::size_t count = bounds_.size(), words = (count + 63) / 64;
+        maybe_.resize(words);
+        sure_.resize(words);
+        // Eight at a time where the processor can: bits of "may meet" and "clearly meets"
+        quickTest(quick, aimX_ + at, aimY_ + at, aimZ_ + at, aimCos_ + at, aimSin_ + at, count, maybe_.data(),
+                  sure_.data());
         found_.clear();
-        for (std::size_t k = 0; k < count; ++k) {
-            // Most objects are clearly outside: eight verdicts of 0 at a time are skipped
-            if (k % 8 == 0 && k + 8 <= count) {
-                std::uint64_t eight;
-                std::memcpy(&eight, kept + k, 8);
-                if (eight == 0) {
-                    k += 7;
-                    continue;
-                }
+        // Most objects are clearly outside: only the set bits are visited, in order
+        for (std::size_t w = 0; w < words; ++w)
+            for (std::uint64_t bits = maybe_[w]; bits != 0; bits &= bits - 1) {
+                const std::size_t k = 64 * w + std::size_t(std::countr_zero(bits));
+                if ((sure_[w] >> (k % 64) & 1) != 0 ||
+                    coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[order[k]]) <= 0.0)
+                    found_.emplace_back(reachFrom(from, int(order[k])), int(order[k]));
             }
-            if (kept[k] == 2 ||
-                (kept[k] == 1 &&
-                 coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[order[k]]) <= 0.0))
-                found_.emplace_back(reachFrom(from, int(order[k])), int(order[k]));
-        }
         // [cell-quick-test]
     } else {
         // A large scene: the cull finds them, then they are sorted

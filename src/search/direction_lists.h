@@ -58,6 +58,19 @@ public:
     const DirectionList& get(int site, const Vec3& d, std::uint32_t& memo, Counters& n);
     /// Lists built so far (in the order built).
     std::size_t size() const { return lists_.size(); }
+
+    /// The quick test of a cell's cone (axis a, half-angle alpha) against `count` objects'
+    /// aims (unit direction x, y, z from the site, cosine and sine of the half-angle beta
+    /// each subtends), in single precision: bit k of `maybe` is set when object k may meet
+    /// the cone (within a margin of its edge), bit k of `sure` when it clearly does. Each
+    /// array holds (count + 63) / 64 words. `simd`: eight at a time with AVX2 where the
+    /// processor has it, the same operations in the same order (the same bits as without).
+    struct QuickCone {
+        float ax, ay, az, cosA, sinA;
+    };
+    static void quickTest(const QuickCone& c, const float* x, const float* y, const float* z, const float* cosB,
+                          const float* sinB, std::size_t count, std::uint64_t* maybe, std::uint64_t* sure,
+                          bool simd = true);
     /// Forgets every list but the first `n` built (the sites' orders, which depend on the
     /// scene alone, are kept).
     void truncate(std::size_t n);
@@ -106,7 +119,7 @@ private:
     /// in arrays of their own, so one loop tests many at once: a quick test that only ever
     /// keeps too many objects, the exact one deciding (build())
     float *aimX_ = nullptr, *aimY_ = nullptr, *aimZ_ = nullptr, *aimCos_ = nullptr, *aimSin_ = nullptr;
-    std::vector<unsigned char> kept_;  ///< scratch: the quick test's verdicts on a site's order
+    std::vector<std::uint64_t> maybe_, sure_;  ///< scratch: the quick test's verdicts on a site's order
     std::vector<Sphere> bounds_;  ///< every object's bounding sphere, by id, in one array
     static constexpr std::uint32_t kNoOrder = std::uint32_t(-1);
 };
