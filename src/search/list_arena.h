@@ -17,6 +17,7 @@
 
 namespace rc {
 
+/// Blocks of memory handed out in pieces, given back only all at once past a mark.
 class ListArena {
 public:
     /// Where the arena stood: everything taken after it can be given back (rewind()).
