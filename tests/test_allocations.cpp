@@ -29,7 +29,7 @@ namespace {
 struct Measured {
     long allocations;
     std::uint64_t rays;
-    std::uint64_t directionLists;  ///< built (two vectors each)
+    std::uint64_t directionLists;  ///< built (in the lists' arena, no allocation each)
 };
 Measured render(const std::shared_ptr<const Scene>& scene, AccelKind accel, CacheKind cache, OrderKind order,
                 int size, int height = 0) {
@@ -57,9 +57,9 @@ TEST_CASE("the ray loop does not allocate", "[alloc]") {
                 REQUIRE(large.rays > 3 * small.rays);
                 REQUIRE(large.allocations > 0);  // the counter counts: paths and children are new
                 // Allocations follow what is new (lists, bands), a small fraction of the rays;
-                // a direction list holds two vectors
-                REQUIRE(large.allocations - 2 * long(large.directionLists) > 0);
-                REQUIRE((large.allocations - 2 * long(large.directionLists)) * 5 < long(large.rays));
+                // direction lists are kept in large blocks (search/list_arena.h), not each its own
+                REQUIRE(large.allocations * 5 < long(large.rays));
+                if (large.directionLists > 100) REQUIRE(large.allocations < long(large.directionLists));
                 // Scanline order without blocker lists: four times the rays, no more allocations
                 if (order == OrderKind::Scanline && (cache == CacheKind::None || cache == CacheKind::Cylinder))
                     REQUIRE(large.allocations == small.allocations);

@@ -507,7 +507,7 @@ TEST_CASE("a direction list holds every object a ray leaving its site in its cel
             const Vec3 d = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
             const int site = id >= 0 ? sites.pointSite(id, o) : sites.eyeSite();
             std::uint32_t memo = std::uint32_t(-1);
-            const BlockerList& list = directions.get(site, d, memo, n);
+            const DirectionList& list = directions.get(site, d, memo, n);
             REQUIRE(list.origin == site);
             REQUIRE(list.target == DirectionLists::cell(d, site == sites.eyeSite() ? DirectionLists::kEyeCellsPerSide
                                                                                      : DirectionLists::kCellsPerSide));
@@ -634,11 +634,11 @@ TEST_CASE("a direction list picked from its site's order is the list the cull fi
                 d = glm::normalize(d);
                 REQUIRE(DirectionLists::cell(d, side) == cell);
                 std::uint32_t m1 = std::uint32_t(-1), m2 = std::uint32_t(-1);
-                const BlockerList& a = picked.get(site, d, m1, n);
-                const BlockerList& b = culled.get(site, d, m2, n);
+                const DirectionList& a = picked.get(site, d, m1, n);
+                const DirectionList& b = culled.get(site, d, m2, n);
                 INFO(spec << ": site " << site << " cell " << cell);
-                REQUIRE(a.ids == b.ids);
-                REQUIRE(a.reach == b.reach);
+                REQUIRE(std::ranges::equal(a.ids, b.ids));
+                REQUIRE(std::ranges::equal(a.reach, b.reach));
                 ++compared;
                 entries += a.ids.size();
             }
@@ -647,6 +647,56 @@ TEST_CASE("a direction list picked from its site's order is the list the cull fi
         REQUIRE(compared > 100);
         REQUIRE(entries > compared);  // the lists compared are not all empty
     }
+}
+
+TEST_CASE("a cell's quick test gives the same bits eight at a time as one at a time", "[cache][directions]") {
+    // Random aims and cones, many of them on a verdict's edge (aim equal to edge -+ margin
+    // up to rounding), and every count from 0 to 130: the AVX2 path (where the processor
+    // has it) and the scalar one set the same bits, and the bits follow the verdicts
+    Random rng(7);
+    const Uniform u{-1.0, 1.0};
+    std::uint64_t edges = 0;
+    for (int round = 0; round < 40; ++round) {
+        const std::size_t count = std::size_t(round * 3 + round % 5);
+        std::vector<float> x(count), y(count), z(count), cosB(count), sinB(count);
+        const Vec3 axis = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+        const double alpha = 0.5 * (u(rng) + 1.0);
+        const DirectionLists::QuickCone c{float(axis.x), float(axis.y), float(axis.z), float(std::cos(alpha)),
+                                          float(std::sin(alpha))};
+        for (std::size_t k = 0; k < count; ++k) {
+            const Vec3 v = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+            const double beta = 0.25 * (u(rng) + 1.0);
+            x[k] = float(v.x), y[k] = float(v.y), z[k] = float(v.z);
+            cosB[k] = float(std::cos(beta)), sinB[k] = float(std::sin(beta));
+            if (k % 3 == 0) {
+                // Put the aim on the edge: the sphere's angle from the axis exactly alpha + beta
+                const Vec3 side = glm::normalize(glm::cross(axis, v));
+                const Vec3 w = glm::normalize(std::cos(alpha + beta) * axis +
+                                              std::sin(alpha + beta) * glm::cross(side, axis));
+                x[k] = float(w.x), y[k] = float(w.y), z[k] = float(w.z);
+            }
+        }
+        const std::size_t words = (count + 63) / 64;
+        std::vector<std::uint64_t> maybe1(words + 1, ~0ull), sure1(words + 1, ~0ull), maybe2(words + 1),
+            sure2(words + 1);
+        DirectionLists::quickTest(c, x.data(), y.data(), z.data(), cosB.data(), sinB.data(), count, maybe1.data(),
+                                  sure1.data(), true);
+        DirectionLists::quickTest(c, x.data(), y.data(), z.data(), cosB.data(), sinB.data(), count, maybe2.data(),
+                                  sure2.data(), false);
+        INFO("round " << round << ", " << count << " objects");
+        for (std::size_t w = 0; w < words; ++w) {
+            REQUIRE(maybe1[w] == maybe2[w]);
+            REQUIRE(sure1[w] == sure2[w]);
+        }
+        REQUIRE(maybe1[words] == ~0ull);  // nothing written past the words asked for
+        for (std::size_t k = 0; k < count; ++k) {
+            const float aim = x[k] * c.ax + y[k] * c.ay + z[k] * c.az, edge = c.cosA * cosB[k] - c.sinA * sinB[k];
+            REQUIRE(bool(maybe2[k / 64] >> (k % 64) & 1) == (aim >= edge - 1e-4f));
+            REQUIRE(bool(sure2[k / 64] >> (k % 64) & 1) == (aim >= edge + 1e-4f));
+            edges += std::abs(aim - edge) < 2e-4f;
+        }
+    }
+    REQUIRE(edges > 100);  // the edge cases were met
 }
 
 TEST_CASE("packed spheres test a list as testObjectQuickly does, four at a time or one", "[cache][packed]") {

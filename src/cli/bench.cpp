@@ -9,6 +9,7 @@
 #include "analysis/median.h"
 #include "cli/commands.h"
 #include "cli/cpu_clock.h"
+#include "cli/image_hash.h"
 #include "render/output_files.h"
 #include "render/parallel_render.h"
 #include "scene/builtin_scenes.h"
@@ -61,7 +62,8 @@ int bench(const BenchArgs& a) {
     const int cpu = a.threads == 1 ? pinToCurrentCpu() : -1;
     if (cpu >= 0) std::printf("Every render ran on processor %d.\n", cpu);
     std::ostringstream csv;
-    csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree,ns_per_ray\n";
+    csv << "scene,accel,cache,order,threads,seconds,rays,rays_per_second,tests_per_ray,speed_vs_embree,ns_per_ray,"
+           "same_image\n";
     for (const std::string& spec : a.scenes) {
         // The scene, its size (1024 unless given), the configurations it runs
         auto scene = std::make_shared<const Scene>(loadScene(spec, a.flags.seed));
@@ -82,6 +84,10 @@ int bench(const BenchArgs& a) {
         }
         std::vector<std::vector<double>> times(run.size());
         std::vector<Counters> counts(run.size());
+        // Each render's image against the first uncached one's, byte for byte (untimed):
+        // 1 the same in every repeat, 0 not, -1 not compared (a replay keeps no image)
+        std::vector<int> same(run.size(), -1);
+        std::string reference;
         // [bench-interleave]
         for (int r = 0; r < a.repeat; ++r) {
             for (std::size_t c = 0; c < run.size(); ++c) {
@@ -95,6 +101,11 @@ int bench(const BenchArgs& a) {
                     : renderParallel(scene, o, a.threads);
                 times[c].push_back(processSeconds() - start);
                 counts[c] = result.counters;
+                if (run[c].replay) continue;
+                const std::string hash = sha256Hex(result.image.rgb8());
+                if (reference.empty() && run[c].cache == CacheKind::None && run[c].accel != AccelKind::Embree)
+                    reference = hash;
+                same[c] = same[c] != 0 && hash == reference ? 1 : 0;
             }
         }
         // [bench-interleave]
@@ -104,9 +115,11 @@ int bench(const BenchArgs& a) {
             if (run[c].accel == AccelKind::Embree) embreeRate = double(counts[c].totalRays()) / median(times[c]);
         std::printf("\n%s: %d objects, %dx%d, %d thread(s), median of %d\n", scene->name.c_str(), scene->size(),
                     base.width, base.height, a.threads, a.repeat);
-        std::printf("  %-8s %-9s %-9s %9s %12s %9s %11s %10s\n", "accel", "cache", "order", "seconds", "Mrays/s",
-                    "ns/ray", "tests/ray", "vs embree");
+        std::printf("  %-8s %-11s %-9s %9s %12s %9s %11s %10s %6s\n", "accel", "cache", "order", "seconds", "Mrays/s",
+                    "ns/ray", "tests/ray", "vs embree", "image");
         double replayScanline = 0.0;  // seconds of the scanline render answered from a table
+        double bestVsEmbree = 0.0;
+        std::size_t best = run.size();
         for (std::size_t c = 0; c < run.size(); ++c) {
             const double t = median(times[c]);
             const double rays = double(counts[c].totalRays());
@@ -115,13 +128,25 @@ int bench(const BenchArgs& a) {
             const double vsEmbree = embreeRate > 0.0 ? rate / embreeRate : 0.0;
             const std::string accel = run[c].replay ? "table" : std::string(toString(run[c].accel));
             if (run[c].replay && run[c].order == OrderKind::Scanline) replayScanline = t;
-            std::printf("  %-8s %-9s %-9s %9.3f %12.3f %9.1f %11.2f %10.2f\n", accel.c_str(),
+            std::printf("  %-8s %-11s %-9s %9.3f %12.3f %9.1f %11.2f %10.2f %6s\n", accel.c_str(),
                         std::string(toString(run[c].cache)).c_str(), std::string(toString(run[c].order)).c_str(), t,
-                        rate / 1e6, 1e9 / rate, perRay, vsEmbree);
+                        rate / 1e6, 1e9 / rate, perRay, vsEmbree, same[c] < 0 ? "-" : same[c] ? "same" : "DIFFERS");
             csv << scene->name << ',' << accel << ',' << toString(run[c].cache) << ',' << toString(run[c].order) << ','
                 << (run[c].replay ? 1 : a.threads) << ',' << t << ',' << rays << ',' << rate << ',' << perRay << ','
-                << vsEmbree << ',' << 1e9 / rate << '\n';
+                << vsEmbree << ',' << 1e9 / rate << ',' << same[c] << '\n';
+            // [bench-best-cache]
+            // The fastest cached render whose image is the uncached one's, against Embree
+            if (embreeRate > 0.0 && !run[c].replay && run[c].cache != CacheKind::None && same[c] == 1 &&
+                vsEmbree > bestVsEmbree) {
+                bestVsEmbree = vsEmbree;
+                best = c;
+            }
+            // [bench-best-cache]
         }
+        if (best < run.size())
+            std::printf("  fastest cache with the uncached image: %s %s %s, %.2fx Embree's rays per second\n",
+                        std::string(toString(run[best].accel)).c_str(), std::string(toString(run[best].cache)).c_str(),
+                        std::string(toString(run[best].order)).c_str(), bestVsEmbree);
         // [bench-cost-per-test]
         // A sphere test of the uncached scan: its time less what the same render costs
         // besides searching (answered from a table), over its tests

@@ -122,9 +122,9 @@ Lookup BlockerCache::searchMissed(const Query& q, CacheEntry& e, MissReason why,
     if (!directions_) return searchAndReload(q, e, why, n);
     // [direction-search]
     // Blocker+dir: only the objects in the ray's direction from its site can be hit, nearest first
-    const BlockerList& list = directions_->get(lists_.originSite(q), q.ray.d, e.directions, n);
+    const DirectionList& list = directions_->get(lists_.originSite(q), q.ray.d, e.directions, n);
     Answer best;
-    testBlockers(q, list, best, n);
+    packed_.testNearestFirst(scene_, q, list.ids.data(), list.reach.data(), list.ids.size(), best, n);
     ++n.directionSearches;
     reload(q, best, e, n);
     return {true, best, Decision::Miss, why};

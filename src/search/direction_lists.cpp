@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
+#include <bit>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RC_CELL_AVX2 1
+#include <immintrin.h>
+#endif
 
 namespace rc {
 
@@ -59,6 +64,58 @@ struct CellCull final : SphereCull {
 };
 }  // namespace
 
+namespace {
+/// The quick test of one object: 0 clearly outside, 1 too near the edge to tell, 2 clearly inside
+inline int quickVerdict(const DirectionLists::QuickCone& c, float x, float y, float z, float cosB, float sinB) {
+    const float aim = x * c.ax + y * c.ay + z * c.az, edge = c.cosA * cosB - c.sinA * sinB;
+    return (aim >= edge - 1e-4f) + (aim >= edge + 1e-4f);
+}
+
+#ifdef RC_CELL_AVX2
+/// Eight objects at a time, each as quickVerdict() computes it (no fused multiply-add: this
+/// function's target has none), from `begin` (a multiple of 64) to the last whole eight
+__attribute__((target("avx2"))) std::size_t quickEights(const DirectionLists::QuickCone& c, const float* x,
+                                                        const float* y, const float* z, const float* cosB,
+                                                        const float* sinB, std::size_t count, std::uint64_t* maybe,
+                                                        std::uint64_t* sure) {
+    const __m256 ax = _mm256_set1_ps(c.ax), ay = _mm256_set1_ps(c.ay), az = _mm256_set1_ps(c.az);
+    const __m256 cosA = _mm256_set1_ps(c.cosA), sinA = _mm256_set1_ps(c.sinA), margin = _mm256_set1_ps(1e-4f);
+    std::size_t k = 0;
+    for (; k + 8 <= count; k += 8) {
+        const __m256 aim = _mm256_add_ps(
+            _mm256_add_ps(_mm256_mul_ps(_mm256_loadu_ps(x + k), ax), _mm256_mul_ps(_mm256_loadu_ps(y + k), ay)),
+            _mm256_mul_ps(_mm256_loadu_ps(z + k), az));
+        const __m256 edge = _mm256_sub_ps(_mm256_mul_ps(cosA, _mm256_loadu_ps(cosB + k)),
+                                          _mm256_mul_ps(sinA, _mm256_loadu_ps(sinB + k)));
+        const auto low = std::uint64_t(_mm256_movemask_ps(_mm256_cmp_ps(aim, _mm256_sub_ps(edge, margin), _CMP_GE_OQ)));
+        const auto high = std::uint64_t(_mm256_movemask_ps(_mm256_cmp_ps(aim, _mm256_add_ps(edge, margin), _CMP_GE_OQ)));
+        maybe[k / 64] |= low << (k % 64);
+        sure[k / 64] |= high << (k % 64);
+    }
+    return k;
+}
+#endif
+}  // namespace
+
+void DirectionLists::quickTest(const QuickCone& c, const float* x, const float* y, const float* z,
+                               const float* cosB, const float* sinB, std::size_t count, std::uint64_t* maybe,
+                               std::uint64_t* sure, bool simd) {
+    std::fill(maybe, maybe + (count + 63) / 64, 0);
+    std::fill(sure, sure + (count + 63) / 64, 0);
+    std::size_t k = 0;
+#ifdef RC_CELL_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (simd && avx2) k = quickEights(c, x, y, z, cosB, sinB, count, maybe, sure);
+#else
+    (void)simd;
+#endif
+    for (; k < count; ++k) {
+        const int v = quickVerdict(c, x[k], y[k], z[k], cosB[k], sinB[k]);
+        maybe[k / 64] |= std::uint64_t(v >= 1) << (k % 64);
+        sure[k / 64] |= std::uint64_t(v == 2) << (k % 64);
+    }
+}
+
 DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search, const BlockerLists& sites,
                                bool siteOrders)
     : scene_(scene), search_(search), sites_(sites) {
@@ -81,36 +138,37 @@ std::size_t DirectionLists::nearestFirst(int site) {
         // [site-order]
         // Every object by its reach from the site, as fillNearestFirst() orders a list: a
         // cell's list is then the objects of this order its cone of rays meets, in order
-        if (orders_.capacity() == 0) {
+        if (!orders_) {
             // Room for every site at once (no copy as it grows: pages are touched as used)
             const std::size_t all = orderAt_.size() * bounds_.size();
-            orders_.reserve(all);
-            for (std::vector<float>* aim : {&aimX_, &aimY_, &aimZ_, &aimCos_, &aimSin_}) aim->reserve(all);
+            orders_ = orderArena_.take<std::uint32_t>(all);
+            for (float** aim : {&aimX_, &aimY_, &aimZ_, &aimCos_, &aimSin_}) *aim = orderArena_.take<float>(all);
         }
-        at = std::uint32_t(orders_.size());
+        at = std::uint32_t(ordered_);
         const Sphere from = sites_.siteSphere(site);
         sorting_.clear();
         for (int id = 0; id < int(bounds_.size()); ++id) sorting_.emplace_back(reachFrom(from, id), id);
         std::sort(sorting_.begin(), sorting_.end());
         // Only the ids are kept: a cell's build recomputes the reach of the few it keeps
-        for (const auto& [reach, id] : sorting_) orders_.push_back(std::uint32_t(id));
-        const auto first = orders_.begin() + std::ptrdiff_t(at);
+        for (const auto& [reach, id] : sorting_) orders_[ordered_++] = std::uint32_t(id);
+        const std::uint32_t* first = orders_ + at;
         // [site-order]
         // Each object's aim: a sphere of radius g at distance L subtends a half-angle
         // beta = asin(g / L); one the site's sphere reaches is seen in every direction
         const double reach = from.r + slack_;
-        for (auto it = first; it != orders_.end(); ++it) {
+        std::size_t k = at;
+        for (auto it = first; it != orders_ + ordered_; ++it, ++k) {
             const Sphere& s = bounds_[*it];
             const Vec3 v = s.c - from.c;
             const double length = glm::length(v), g = s.r + reach;
             // Else all zero: the quick test cannot tell (0 is within its margin of 0), the exact one decides
             const bool seen = length > g * (1.0 + 1e-6);
             const double sinB = seen ? g / length : 0.0;
-            aimX_.push_back(seen ? float(v.x / length) : 0.0f);
-            aimY_.push_back(seen ? float(v.y / length) : 0.0f);
-            aimZ_.push_back(seen ? float(v.z / length) : 0.0f);
-            aimCos_.push_back(seen ? float(std::sqrt(1.0 - sinB * sinB)) : 0.0f);
-            aimSin_.push_back(float(sinB));
+            aimX_[k] = seen ? float(v.x / length) : 0.0f;
+            aimY_[k] = seen ? float(v.y / length) : 0.0f;
+            aimZ_[k] = seen ? float(v.z / length) : 0.0f;
+            aimCos_[k] = seen ? float(std::sqrt(1.0 - sinB * sinB)) : 0.0f;
+            aimSin_[k] = float(sinB);
         }
     }
     return at;
@@ -149,7 +207,7 @@ int DirectionLists::cell(const Vec3& d, int side) {
     // [direction-cell]
 }
 
-const BlockerList& DirectionLists::get(int site, const Vec3& d, std::uint32_t& memo, Counters& n) {
+const DirectionList& DirectionLists::get(int site, const Vec3& d, std::uint32_t& memo, Counters& n) {
     const int c = cell(d, side(site));
     // A path's misses mostly leave the same site in the same cell as its last one
     if (memo < lists_.size() && lists_[memo].origin == site && lists_[memo].target == c) return lists_[memo];
@@ -161,12 +219,13 @@ const BlockerList& DirectionLists::get(int site, const Vec3& d, std::uint32_t& m
     const std::uint32_t number = std::uint32_t(lists_.size());
     table_.insert(key, number);
     memo = number;
-    BlockerList& list = lists_.emplace_back();
+    DirectionList& list = lists_.emplace_back();
+    list.start = arena_.mark();
     build(list, site, c, n);
     return list;
 }
 
-void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
+void DirectionLists::build(DirectionList& list, int site, int cell, Counters& n) {
     list.origin = site;
     list.target = cell;
     // [build-direction-list]
@@ -178,7 +237,7 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
         // Those of the site's order, nearest first: a ray that has hit something at t
         // cannot hit first what lies farther
         const std::size_t at = nearestFirst(site);
-        const std::uint32_t* order = orders_.data() + at;
+        const std::uint32_t* order = orders_ + at;
         const double reach = from.r + slack_, sinA = std::sqrt(1.0 - cone.cosHalf * cone.cosHalf);
         // [cell-quick-test]
         // The sphere meets the cone when its direction is within alpha + beta of the axis:
@@ -186,54 +245,50 @@ void DirectionLists::build(BlockerList& list, int site, int cell, Counters& n) {
         // precision, with a margin a thousand times its rounding, the quick test keeps every
         // object the exact distance keeps and drops every other one, but for those near
         // the cone's edge, which the exact distance decides
-        const float ax = float(cone.axis.x), ay = float(cone.axis.y), az = float(cone.axis.z);
-        const float cosA = float(cone.cosHalf), sinAf = float(sinA);
-        const std::size_t count = bounds_.size();
-        const float *x = aimX_.data() + at, *y = aimY_.data() + at, *z = aimZ_.data() + at;
-        const float *cosB = aimCos_.data() + at, *sinB = aimSin_.data() + at;
-        kept_.resize(count);
-        unsigned char* kept = kept_.data();
-        // 0: clearly outside, 2: clearly inside, 1: too near the edge to tell (the exact distance tells)
-        for (std::size_t k = 0; k < count; ++k) {  // no branch: the compiler tests several at once
-            const float aim = x[k] * ax + y[k] * ay + z[k] * az, edge = cosA * cosB[k] - sinAf * sinB[k];
-            kept[k] = (unsigned char)((aim >= edge - 1e-4f) + (aim >= edge + 1e-4f));
-        }
+        const QuickCone quick{float(cone.axis.x), float(cone.axis.y), float(cone.axis.z), float(cone.cosHalf),
+                              float(sinA)};
+        const std::size_t count = bounds_.size(), words = (count + 63) / 64;
+        maybe_.resize(words);
+        sure_.resize(words);
+        // Eight at a time where the processor can: bits of "may meet" and "clearly meets"
+        quickTest(quick, aimX_ + at, aimY_ + at, aimZ_ + at, aimCos_ + at, aimSin_ + at, count, maybe_.data(),
+                  sure_.data());
         found_.clear();
-        for (std::size_t k = 0; k < count; ++k) {
-            // Most objects are clearly outside: eight verdicts of 0 at a time are skipped
-            if (k % 8 == 0 && k + 8 <= count) {
-                std::uint64_t eight;
-                std::memcpy(&eight, kept + k, 8);
-                if (eight == 0) {
-                    k += 7;
-                    continue;
-                }
+        // Most objects are clearly outside: only the set bits are visited, in order
+        for (std::size_t w = 0; w < words; ++w)
+            for (std::uint64_t bits = maybe_[w]; bits != 0; bits &= bits - 1) {
+                const std::size_t k = 64 * w + std::size_t(std::countr_zero(bits));
+                if ((sure_[w] >> (k % 64) & 1) != 0 ||
+                    coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[order[k]]) <= 0.0)
+                    found_.emplace_back(reachFrom(from, int(order[k])), int(order[k]));
             }
-            if (kept[k] == 2 ||
-                (kept[k] == 1 &&
-                 coneDistance(from.c, reach, cone.axis, cone.cosHalf, sinA, bounds_[order[k]]) <= 0.0))
-                found_.emplace_back(reachFrom(from, int(order[k])), int(order[k]));
-        }
         // [cell-quick-test]
-        list.ids.resize(found_.size());
-        list.reach.resize(found_.size());
-        for (std::size_t k = 0; k < found_.size(); ++k) {
-            list.reach[k] = found_[k].first;
-            list.ids[k] = found_[k].second;
-        }
     } else {
         // A large scene: the cull finds them, then they are sorted
         found_.clear();
         CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, found_);
         search_.cull(cull);
-        fillNearestFirst(list, scene_, from, slack_, found_);
+        // (found_ is left sorted too, each with its reach: what the arena keeps below)
+        sorted_.ids.clear();
+        sorted_.reach.clear();
+        fillNearestFirst(sorted_, scene_, from, slack_, found_);
     }
     // [build-direction-list]
+    // Kept in the arena, one after another
+    int* ids = arena_.take<int>(found_.size());
+    double* reach = arena_.take<double>(found_.size());
+    for (std::size_t k = 0; k < found_.size(); ++k) {
+        reach[k] = found_[k].first;
+        ids[k] = found_[k].second;
+    }
+    list.ids = {ids, found_.size()};
+    list.reach = {reach, found_.size()};
     n.directionListEntries += list.ids.size();
 }
 
 void DirectionLists::truncate(std::size_t n) {
     if (n > lists_.size()) throw std::logic_error("DirectionLists::truncate: cannot grow");
+    if (n < lists_.size()) arena_.rewind(lists_[n].start);
     lists_.resize(n);
     table_.keepBelow(std::uint32_t(n));
 }

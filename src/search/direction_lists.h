@@ -17,12 +17,25 @@
 /// (1987), a year after the paper, grown lazily from the rays that ask.
 #include <cstdint>
 #include <deque>
+#include <span>
 #include <vector>
 
 #include "search/blocker_lists.h"
+#include "search/list_arena.h"
 #include "search/list_table.h"
 
 namespace rc {
+
+/// One cell's list: the objects rays leaving its site in its cell can meet, nearest first,
+/// each with its reach (as in a BlockerList), kept in the lists' arena.
+struct DirectionList {
+    int origin = -1;  ///< its site
+    int target = -1;  ///< its cell
+    bool bypass = false;  ///< never: even a long list is worth testing (as BlockerList's)
+    std::span<const int> ids;
+    std::span<const double> reach;
+    ListArena::Mark start;  ///< where the arena stood before it
+};
 
 /// Lists of the objects rays leaving a site in a cell of directions can meet.
 class DirectionLists {
@@ -42,9 +55,22 @@ public:
     /// The list of rays leaving `site` in the cell of `d`, built on first use and counted
     /// in `n`. Even a long list is worth testing: nearest first, it is left at the first hit.
     /// Tries first the list numbered `memo`, and leaves the list's number there.
-    const BlockerList& get(int site, const Vec3& d, std::uint32_t& memo, Counters& n);
+    const DirectionList& get(int site, const Vec3& d, std::uint32_t& memo, Counters& n);
     /// Lists built so far (in the order built).
     std::size_t size() const { return lists_.size(); }
+
+    /// The quick test of a cell's cone (axis a, half-angle alpha) against `count` objects'
+    /// aims (unit direction x, y, z from the site, cosine and sine of the half-angle beta
+    /// each subtends), in single precision: bit k of `maybe` is set when object k may meet
+    /// the cone (within a margin of its edge), bit k of `sure` when it clearly does. Each
+    /// array holds (count + 63) / 64 words. `simd`: eight at a time with AVX2 where the
+    /// processor has it, the same operations in the same order (the same bits as without).
+    struct QuickCone {
+        float ax, ay, az, cosA, sinA;
+    };
+    static void quickTest(const QuickCone& c, const float* x, const float* y, const float* z, const float* cosB,
+                          const float* sinB, std::size_t count, std::uint64_t* maybe, std::uint64_t* sure,
+                          bool simd = true);
     /// Forgets every list but the first `n` built (the sites' orders, which depend on the
     /// scene alone, are kept).
     void truncate(std::size_t n);
@@ -59,7 +85,7 @@ private:
     static CellCone cellCone(int cell, int side);
     /// Cells per side of a face around `site`.
     int side(int site) const;
-    void build(BlockerList& list, int site, int cell, Counters& n);
+    void build(DirectionList& list, int site, int cell, Counters& n);
     /// Every object seen from `site`, nearest first (by reach, then id): sorted the first
     /// time one of the site's cells is built, and shared by all of them.
     std::size_t nearestFirst(int site);
@@ -72,21 +98,28 @@ private:
     const CompleteSearch& search_;
     const BlockerLists& sites_;
     double slack_;
-    std::deque<BlockerList> lists_;
+    std::deque<DirectionList> lists_;
     ListTable table_;
+    /// The lists' objects and reaches, in large blocks (no two allocations per list)
+    ListArena arena_;
+    /// The sites' orders and aims below, in blocks of their own: a truncate keeps them
+    ListArena orderArena_;
     std::vector<std::pair<double, int>> found_;  ///< scratch of the list being built
     /// Per site: where its order starts in orders_, or kNoOrder (empty: none kept, see kMostOrderEntries)
     std::vector<std::uint32_t> orderAt_;
     /// The sites' orders, one after another: object ids only (a reach is recomputed, the
-    /// same double, for the objects a cell keeps)
-    std::vector<std::uint32_t> orders_;
+    /// same double, for the objects a cell keeps); room for every site's, taken at the first
+    /// (pages are touched as they are used)
+    std::uint32_t* orders_ = nullptr;
+    std::size_t ordered_ = 0;  ///< entries of orders_ (and of each aim array) written
+    BlockerList sorted_;  ///< scratch: a large scene's culled list, sorted
     std::vector<std::pair<double, int>> sorting_;  ///< scratch: a site's (reach, id) pairs as they are sorted
     /// Beside each entry of orders_: the object's direction from the site (x, y, z) and the
     /// cosine and sine of the half-angle its grown sphere subtends, in single precision and
     /// in arrays of their own, so one loop tests many at once: a quick test that only ever
     /// keeps too many objects, the exact one deciding (build())
-    std::vector<float> aimX_, aimY_, aimZ_, aimCos_, aimSin_;
-    std::vector<unsigned char> kept_;  ///< scratch: the quick test's verdicts on a site's order
+    float *aimX_ = nullptr, *aimY_ = nullptr, *aimZ_ = nullptr, *aimCos_ = nullptr, *aimSin_ = nullptr;
+    std::vector<std::uint64_t> maybe_, sure_;  ///< scratch: the quick test's verdicts on a site's order
     std::vector<Sphere> bounds_;  ///< every object's bounding sphere, by id, in one array
     static constexpr std::uint32_t kNoOrder = std::uint32_t(-1);
 };

@@ -269,6 +269,28 @@ TEST_CASE("a list tested four spheres at a time against one at a time", "[packed
     };
 }
 
+TEST_CASE("a cell's quick test, eight at a time against one at a time", "[directions]") {
+    // DirectionLists::quickTest on 512 random aims (a cube:8 site's order), AVX2 against scalar
+    Random rng(5);
+    const std::size_t count = 512;
+    std::vector<float> x(count), y(count), z(count), cosB(count), sinB(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec3 v = glm::normalize(Vec3(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)));
+        const double beta = rng.uniform(0.0, 0.3);
+        x[k] = float(v.x), y[k] = float(v.y), z[k] = float(v.z);
+        cosB[k] = float(std::cos(beta)), sinB[k] = float(std::sin(beta));
+    }
+    const DirectionLists::QuickCone c{0.0f, 0.0f, 1.0f, 0.8f, 0.6f};
+    std::vector<std::uint64_t> maybe(count / 64), sure(count / 64);
+    auto run = [&](bool simd) {
+        DirectionLists::quickTest(c, x.data(), y.data(), z.data(), cosB.data(), sinB.data(), count, maybe.data(),
+                                  sure.data(), simd);
+        return maybe[0] ^ sure[1];
+    };
+    BENCHMARK("quickTest scalar: 512 aims") { return run(false); };
+    BENCHMARK("quickTest, picked at run time: 512 aims") { return run(true); };
+}
+
 TEST_CASE("direction lists picked from their site's order against culled and sorted", "[directions]") {
     // Every cell of 40 of cube:8's objects, built anew each time: the lists are the same
     const Scene scene = makeBuiltin("cube:8");
