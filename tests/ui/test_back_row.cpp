@@ -27,6 +27,7 @@ using namespace rcgui;
 using rcgui::testing::showAt;
 using rcgui::testing::shippedTour;
 using rcgui::testing::stopOptionsOf;
+using rcgui::testing::showTourAtProjector;
 
 namespace {
 
@@ -66,9 +67,7 @@ TEST_CASE("At 1280x720 with large fonts no label of the scene view covers anothe
     for (const QString& file : {QString("hanrahan86.json"), QString("debugging.json")}) {
         const rc::Tour tour = shippedTour(file);
         MainWindow w;
-        w.setLargeFonts(true);
-        showAt(w, 1280, 720);
-        w.setTour(tour, stopOptionsOf(tour));
+        showTourAtProjector(w, tour);
         for (int k = 1; k <= int(tour.stops.size()); ++k) {
             REQUIRE(w.goToStop(k, true));
             QApplication::processEvents();
@@ -135,9 +134,7 @@ TEST_CASE("The legend's lines are as tall in a shown window as in a screenshot, 
           "[gui][tour][layout]") {
     const rc::Tour tour = shippedTour("hanrahan86.json");
     MainWindow w;
-    w.setLargeFonts(true);
-    showAt(w, 1280, 720);
-    w.setTour(tour, stopOptionsOf(tour));
+    showTourAtProjector(w, tour);
     REQUIRE(w.goToStop(2, true));
     // A first paint asks for room beside the picture, the view makes it
     w.grab();
@@ -175,9 +172,7 @@ TEST_CASE("Stop 7 shows the cache tree's entries and a flush: state and object i
           "[gui][tour][layout]") {
     const rc::Tour tour = shippedTour("hanrahan86.json");
     MainWindow w;
-    w.setLargeFonts(true);
-    showAt(w, 1280, 720);
-    w.setTour(tour, stopOptionsOf(tour));
+    showTourAtProjector(w, tour);
     REQUIRE(w.goToStop(7, true));
     QApplication::processEvents();
     auto* panel = w.findChild<CacheTreePanel*>();

@@ -78,7 +78,7 @@ TEST_CASE("The next stop is rendered ahead, and reaching it starts no new render
     REQUIRE(w.goToStop(2));
     waitUntil([&] { return idle(w) && w.tourPlayer().lastPictureMs() >= 0; });
     if (ahead) {
-        // Both renders of stop 2, its own and the compared one, were made ahead and taken
+        // Stop 2 builds no render of its own: both, its own and the compared one, come from ahead
         REQUIRE(w.rendersBuilt() == built);
         REQUIRE(w.tourPlayer().aheadTaken() == 2);
     } else {

@@ -50,4 +50,11 @@ inline std::vector<GuiOptions> stopOptionsOf(const rc::Tour& tour) {
     return stops;
 }
 
+/// `w` as a projector shows it (1280x720, large fonts), with `tour` loaded.
+inline void showTourAtProjector(MainWindow& w, const rc::Tour& tour) {
+    w.setLargeFonts(true);
+    showAt(w, 1280, 720);
+    w.setTour(tour, stopOptionsOf(tour));
+}
+
 }  // namespace rcgui::testing
