@@ -233,8 +233,7 @@ void BlockerLists::build(std::uint32_t number, Counters& n) {
     n.blockerListMax = std::max<std::uint64_t>(n.blockerListMax, list.ids.size());
 }
 
-void fillNearestFirst(BlockerList& list, const Scene& scene, const Sphere& from, double slack,
-                      std::vector<std::pair<double, int>>& found) {
+void sortNearestFirst(const Scene& scene, const Sphere& from, double slack, std::vector<std::pair<double, int>>& found) {
     // [nearest-first]
     // No ray from the origin reaches object j before |c_j - c_origin| - r_j - r_origin
     for (auto& [reach, id] : found) {
@@ -243,6 +242,11 @@ void fillNearestFirst(BlockerList& list, const Scene& scene, const Sphere& from,
     }
     std::sort(found.begin(), found.end());
     // [nearest-first]
+}
+
+void fillNearestFirst(BlockerList& list, const Scene& scene, const Sphere& from, double slack,
+                      std::vector<std::pair<double, int>>& found) {
+    sortNearestFirst(scene, from, slack, found);
     list.reach.reserve(found.size());
     list.ids.reserve(found.size());
     for (const auto& [reach, id] : found) {

@@ -36,8 +36,11 @@ struct BlockerList {
     std::uint64_t builtAt = 0;  ///< how many lists were built before it (BlockerLists::builds())
 };
 
-/// Fills `list` with the objects of `found` (their distances are overwritten), nearest
-/// first: each with its reach from the sphere `from`, less `slack`.
+/// Sorts the objects of `found` nearest first, each distance overwritten by the object's
+/// reach from the sphere `from`, less `slack`.
+void sortNearestFirst(const Scene& scene, const Sphere& from, double slack, std::vector<std::pair<double, int>>& found);
+
+/// Fills `list` with the objects of `found` sorted by sortNearestFirst(), with their reaches.
 void fillNearestFirst(BlockerList& list, const Scene& scene, const Sphere& from, double slack,
                       std::vector<std::pair<double, int>>& found);
 

@@ -136,7 +136,7 @@ std::size_t DirectionLists::nearestFirst(int site) {
     std::uint32_t& at = orderAt_[std::size_t(site)];
     if (at == kNoOrder) {
         // [site-order]
-        // Every object by its reach from the site, as fillNearestFirst() orders a list: a
+        // Every object by its reach from the site, as sortNearestFirst() orders a list: a
         // cell's list is then the objects of this order its cone of rays meets, in order
         if (!orders_) {
             // Room for every site at once (no copy as it grows: pages are touched as used)
@@ -268,10 +268,7 @@ void DirectionLists::build(DirectionList& list, int site, int cell, Counters& n)
         found_.clear();
         CellCull cull(from.c, from.r + slack_, cone.axis, cone.cosHalf, found_);
         search_.cull(cull);
-        // (found_ is left sorted too, each with its reach: what the arena keeps below)
-        sorted_.ids.clear();
-        sorted_.reach.clear();
-        fillNearestFirst(sorted_, scene_, from, slack_, found_);
+        sortNearestFirst(scene_, from, slack_, found_);
     }
     // [build-direction-list]
     // Kept in the arena, one after another

@@ -89,7 +89,7 @@ private:
     /// Every object seen from `site`, nearest first (by reach, then id): sorted the first
     /// time one of the site's cells is built, and shared by all of them.
     std::size_t nearestFirst(int site);
-    /// The reach from `from` of object `id`'s bounding sphere: as fillNearestFirst() computes it
+    /// The reach from `from` of object `id`'s bounding sphere: as sortNearestFirst() computes it
     double reachFrom(const Sphere& from, int id) const;
     /// Scenes whose sites' orders would hold more entries (objects x sites) than this, 4
     /// bytes and 20 bytes each, find each cell's objects through the complete search's cull and sort them
@@ -112,7 +112,6 @@ private:
     /// (pages are touched as they are used)
     std::uint32_t* orders_ = nullptr;
     std::size_t ordered_ = 0;  ///< entries of orders_ (and of each aim array) written
-    BlockerList sorted_;  ///< scratch: a large scene's culled list, sorted
     std::vector<std::pair<double, int>> sorting_;  ///< scratch: a site's (reach, id) pairs as they are sorted
     /// Beside each entry of orders_: the object's direction from the site (x, y, z) and the
     /// cosine and sine of the half-angle its grown sphere subtends, in single precision and

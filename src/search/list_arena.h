@@ -5,8 +5,7 @@
 ///
 /// A cache that builds thousands of lists touches megabytes of fresh memory, a page at a
 /// time; on a virtual machine each first touch of a page is a fault that costs microseconds
-/// (`perf stat -e page-faults` on blocker+dir, cube:8 at 512x512: 7,100 faults against the
-/// uncached render's 2,250). The arena takes blocks of 4 MiB aligned to 2 MiB and, on
+/// (`perf stat -e page-faults` counts them against the uncached render's). The arena takes blocks of 4 MiB aligned to 2 MiB and, on
 /// Linux, asks for them to be backed by huge pages (madvise), so a block costs a few
 /// faults; where the system refuses, it is ordinary memory. What is kept there is the same
 /// either way: the answers do not depend on it.
