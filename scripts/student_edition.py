@@ -7,6 +7,9 @@
                                                   (and in the docs site HTML, the instructor's, less the
                                                   pages the edition replaces)
   student_edition.py inject EDITION               put the instructor's solutions back into EDITION's holes
+  student_edition.py splice HOLE ANSWER OUT       write OUT: the hole file HOLE with each solution region
+                                                  replaced by ANSWER's block for it (a recorded wrong or
+                                                  alternative answer of a hole tutorial)
 
 Solution regions (nbgrader's convention, in C++ comments):
     // BEGIN SOLUTION NN
@@ -16,7 +19,19 @@ Solution regions (nbgrader's convention, in C++ comments):
     // ...the stub, each line commented out once...
     // END STUB
 An open tutorial's region becomes its stub; a closed one keeps its solution (as a course
-releases it after the deadline). The edition leaves out tutorials/instructor/ and replaces
+releases it after the deadline).
+
+A recorded answer of a hole tutorial (tutorials/instructor/wrong/NN-*.cpp and
+alternative/NN-*.cpp for the holes) holds only its answer to each region, in order:
+    // BEGIN ANSWER
+    ...the code in place of the region...
+    // END ANSWER
+or, for a region the answer leaves as the reference solution has it, the one line
+    // KEEP SOLUTION
+and, only when the answer needs an #include or a helper outside the regions, one
+`// BEGIN PREAMBLE` ... `// END PREAMBLE` block before them, put after HOLE's last #include.
+Outside the blocks, comments and blank lines only. `splice` writes the program the
+instructor's build compiles: HOLE with each region (solution and stub) replaced by its answer. The edition leaves out tutorials/instructor/ and replaces
 each file under scripts/student_edition/replace/ (pages that quote solutions).
 """
 import html
@@ -30,6 +45,9 @@ BEGIN = re.compile(r'^\s*// BEGIN SOLUTION (\d\d)\s*$')
 END = re.compile(r'^\s*// END SOLUTION\s*$')
 STUB_BEGIN = re.compile(r'^\s*// BEGIN STUB\s*$')
 STUB_END = re.compile(r'^\s*// END STUB\s*$')
+BLOCK = re.compile(r'^\s*// (BEGIN|END) (ANSWER|PREAMBLE)\s*$')
+KEEP = re.compile(r'^\s*// KEEP SOLUTION\s*$')
+INCLUDE = re.compile(r'^\s*#\s*include\b')
 LEFT_OUT = ('tutorials/instructor/', 'scripts/student_edition/')
 REPLACE = 'scripts/student_edition/replace/'
 ALL = ['01', '02', '03', '04', '05', '06', '07']
@@ -70,6 +88,59 @@ def stubbed(text, open_tutorials):
         result += stub if nn in open_tutorials else sol
         at = end
     return '\n'.join(result + lines[at:])
+
+
+def answer_blocks(text, name):
+    """(preamble lines, [answer lines of each block]) of a recorded answer; SystemExit with
+    name:line on a malformed file."""
+    preamble, answers, block, kind, opened = [], [], None, None, 0
+    for k, line in enumerate(text.split('\n'), 1):
+        m = BLOCK.match(line)
+        if KEEP.match(line) and block is None:
+            answers.append(None)  # this region's reference solution, as it is
+        elif m and m.group(1) == 'BEGIN':
+            if block is not None:
+                raise SystemExit(f'{name}:{k}: BEGIN {m.group(2)} inside the {kind} block opened on line {opened}')
+            if m.group(2) == 'PREAMBLE' and (answers or preamble):
+                raise SystemExit(f'{name}:{k}: one PREAMBLE block, before the first ANSWER block')
+            block, kind, opened = [], m.group(2), k
+        elif m:
+            if block is None or m.group(2) != kind:
+                raise SystemExit(f'{name}:{k}: END {m.group(2)} without its BEGIN')
+            if kind == 'PREAMBLE':
+                preamble = block or ['']
+            else:
+                answers.append(block)
+            block = None
+        elif block is not None:
+            block.append(line)
+        elif line.strip() and not line.strip().startswith('//'):
+            raise SystemExit(f'{name}:{k}: code outside the ANSWER blocks (only comments may be outside)')
+    if block is not None:
+        raise SystemExit(f'{name}:{opened}: BEGIN {kind} without its END')
+    return preamble, answers
+
+
+def spliced(hole, hole_name, answer, answer_name):
+    """The hole file as the instructor's build compiles it, with the answer's block in place of
+    each solution region (its stub dropped, the markers removed)."""
+    lines, found = regions(hole)
+    preamble, answers = answer_blocks(answer, answer_name)
+    if len(answers) != len(found):
+        at = ', '.join(f'{hole_name}:{start + 1}' for _, _, _, start, _ in found)
+        raise SystemExit(f'{answer_name}:1: {len(answers)} ANSWER blocks (or KEEP SOLUTION lines), but '
+                         f'{hole_name} has {len(found)} solution regions ({at}): one per region, in order')
+    result, at = [], 0
+    for (_, sol, _, start, end), block in zip(found, answers):
+        result += lines[at:start] + (sol if block is None else block)
+        at = end
+    result += lines[at:]
+    if preamble:
+        includes = [k for k, line in enumerate(result) if INCLUDE.match(line)]
+        if not includes:
+            raise SystemExit(f'{hole_name}:1: no #include to put the PREAMBLE of {answer_name} after')
+        result[includes[-1] + 1:includes[-1] + 1] = preamble
+    return '\n'.join(result)
 
 
 def tracked(root):
@@ -253,6 +324,12 @@ def main(argv):
         return 0 if leaks(root, argv[1], opened, site) else 1
     elif len(argv) == 2 and argv[0] == 'inject':
         inject(root, argv[1])
+    elif len(argv) == 4 and argv[0] == 'splice':
+        hole = open(argv[1], encoding='utf-8').read()
+        answer = open(argv[2], encoding='utf-8').read()
+        text = spliced(hole, argv[1], answer, argv[2])
+        with open(argv[3], 'w', encoding='utf-8') as o:
+            o.write(text)
     else:
         print(__doc__)
         return 2
