@@ -17,14 +17,6 @@ QColor label(std::int64_t id, int alpha) {
 
 QColor ramp(double t) { return qt(rc::heatRamp(t)); }
 
-QColor fanOutcome(rc::FanOutcome o) {
-    switch (o) {
-        case rc::FanOutcome::Hit: return kSampleRay;
-        case rc::FanOutcome::Missed: return kSampleMissed;
-        case rc::FanOutcome::Lit: return kShadowLit;
-        case rc::FanOutcome::Blocked: return kShadowBlocked;
-    }
-    return kSampleRay;
-}
+QColor fanOutcome(rc::FanOutcome o) { return qt(rc::fanOutcomeColour(o)); }
 
 }  // namespace rcgui::palette

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "view/sample_fan.h"
+
 namespace rc {
 
 Rgb missReasonColour(MissReason r) {
@@ -16,6 +18,16 @@ Rgb missReasonColour(MissReason r) {
         case MissReason::LeftCone: return {204, 121, 167};
     }
     return {255, 255, 255};
+}
+
+Rgb fanOutcomeColour(FanOutcome o) {
+    switch (o) {
+        case FanOutcome::Hit: return colours::kSampleRay;
+        case FanOutcome::Missed: return colours::kSampleMissed;
+        case FanOutcome::Lit: return colours::kShadowLit;
+        case FanOutcome::Blocked: return colours::kShadowBlocked;
+    }
+    return colours::kSampleRay;
 }
 
 Rgb heatRamp(double t) {

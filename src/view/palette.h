@@ -42,6 +42,10 @@ inline constexpr Rgb kNoLookups{110, 110, 110};    ///< heatmaps: a pixel with n
 /// Colour of a miss reason's markers and key entry.
 Rgb missReasonColour(MissReason r);
 
+enum class FanOutcome;  // view/sample_fan.h
+/// Colour of a sample ray by what became of it: hit, missed, lit or blocked.
+Rgb fanOutcomeColour(FanOutcome o);
+
 /// The heatmaps' perceptual colour map (viridis-like) of t in [0, 1] (clamped).
 Rgb heatRamp(double t);
 
