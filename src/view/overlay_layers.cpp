@@ -73,7 +73,10 @@ std::vector<std::string> focusCaption(const SessionState& s, const Selection& se
 
 std::string missCauseText(const SessionState& s, const RayFocus& f) {
     const MissCause c = missCauseOf(s, f);
-    const std::string was = c.cachedObject >= 0 ? "#" + std::to_string(c.cachedObject) : "nothing";
+    // A shadow ray's entry holds its light, not an object
+    const std::string was = c.cachedObject >= 0              ? "#" + std::to_string(c.cachedObject)
+                            : f.kind == RayKind::Shadow && f.light >= 0 ? "light " + std::to_string(f.light)
+                                                                        : "nothing";
     if (c.reason == MissReason::TargetMissed) return "miss: the cached target " + was + " is not hit";
     if (c.reason == MissReason::BlockerHit)
         return "miss: blocker #" + std::to_string(c.blocker) + " is hit before the cached " + was;
