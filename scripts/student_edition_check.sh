@@ -13,7 +13,8 @@
 #     built-in scene renders at 64x48 byte for byte as the main build (MAIN, default
 #     build/src/raycache) renders it, uncached and with the caches that use the holes (and
 #     in breadth-first order, tutorial 04's fill);
-#  4. put each recorded wrong answer of a hole tutorial into its exercise.cpp: NOT YET.
+#  4. put each recorded wrong answer of a hole tutorial (its answers to the regions, spliced
+#     into the hole file) into its exercise.cpp: NOT YET.
 # Usage: scripts/student_edition_check.sh [MAIN_RAYCACHE] [WORK_DIR] [SITE]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -96,9 +97,12 @@ for wrong in "$root"/tutorials/instructor/wrong/*.cpp; do
   nn=$(basename "$wrong" | cut -c1-2)
   dir=$(ls -d tutorials/"$nn"-*)
   # Only the holes: the other tutorials' checks are the main build's, which rejects them
-  grep -q "\"$nn|" "$root/src/CMakeLists.txt" || continue
+  hole=$(sed -n "s/^ *\"$nn|\([^|]*\)|.*/\1/p" "$root/src/CMakeLists.txt")
+  [ -n "$hole" ] || continue
   cp "$dir/exercise.cpp" "$work/solved.cpp"
-  cp "$wrong" "$dir/exercise.cpp"
+  # The wrong answer holds its answer to each region: spliced into the hole file as the
+  # main build does (the edition's copy has no regions left)
+  python3 "$root/scripts/student_edition.py" splice "$root/src/$hole" "$wrong" "$dir/exercise.cpp"
   build "tutorial_${nn}_exercise"
   verdict "$nn" "NOT YET"
   cp "$work/solved.cpp" "$dir/exercise.cpp"

@@ -1,15 +1,9 @@
 // Tutorial 03, an alternative answer the check must accept, and count: the cone without its two
 // spherical caps. It holds the hull, so its lists hold every blocker, plus extras (cube:4: 6860
 // extra on top of the library's 16260, within the 1.5x the check allows).
-#include <algorithm>
-#include <cmath>
+// BEGIN PREAMBLE
 
-#include <glm/geometric.hpp>
-
-#include "geometry/cone.h"
-
-namespace rc {
-
+// The hull of spheres a and b, the distance to it; Hull::distance() calls it
 static double hullDistanceOf(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
     const rc::Vec3 axis = b.c - a.c;
     const double D = glm::length(axis);
@@ -30,9 +24,10 @@ static double hullDistanceOf(const rc::Vec3& p, const rc::Sphere& a, const rc::S
     (void)along;
     return x * s + y * c - a.r;                              // nearest to the cone
 }
-
-// The hull keeps its two spheres; distance() is the function above
-Hull::Hull(const Sphere& a, const Sphere& b) : a_(a), b_(b), nested_(false) {}
-double Hull::distance(const Vec3& p) const { return hullDistanceOf(p, a_, b_); }
-
-}  // namespace rc
+// END PREAMBLE
+// BEGIN ANSWER
+    nested_ = false;  // the hull keeps its two spheres; distance() needs nothing else
+// END ANSWER
+// BEGIN ANSWER
+    return hullDistanceOf(p, a_, b_);
+// END ANSWER

@@ -1,10 +1,5 @@
 // Tutorial 01, a wrong answer: the first object hit in id order, not the nearest.
-#include "search/standard_algorithm.h"
-
-namespace rc {
-
-// [solution]
-Answer standardAlgorithm(const Scene& scene, const Query& q, Counters& n) {
+// BEGIN ANSWER
     Answer best;  // object -1, t = kNoHit
     for (int id = 0; id < scene.size(); ++id) {
         // Convexity: a ray leaving a surface cannot meet it again
@@ -14,7 +9,4 @@ Answer standardAlgorithm(const Scene& scene, const Query& q, Counters& n) {
         if (t < q.tmax && best.object < 0) best = {id, t};
     }
     return best;
-}
-// [solution]
-
-}  // namespace rc
+// END ANSWER

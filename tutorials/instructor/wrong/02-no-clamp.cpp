@@ -1,33 +1,19 @@
 // Tutorial 02, a wrong answer the check must reject: the distance to the infinite line (t not clamped)
-#include <algorithm>
-
-#include <glm/geometric.hpp>
-
-#include "geometry/intersection.h"
-#include "geometry/safety_cylinder.h"
-
-namespace rc {
-
-double segmentDistance(const rc::Vec3& p, const rc::Vec3& a, const rc::Vec3& b) {
+// BEGIN ANSWER
     const rc::Vec3 ab = b - a;
     const double len2 = glm::dot(ab, ab);
     // The nearest point is a + t (b - a), with t clamped to the segment
     const double t = len2 > 0.0 ? glm::dot(p - a, ab) / len2 : 0.0;
     return glm::length(p - (a + t * ab));
-}
-
-double safetyRadius(const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a, const rc::Vec3& b) {
+// END ANSWER
+// BEGIN ANSWER
     // The gap to the nearest other sphere: its centre's distance to the segment minus its radius
     double radius = rc::kNoHit;
     for (int j = 0; j < int(spheres.size()); ++j)
         if (j != hit) radius = std::min(radius, segmentDistance(spheres[j].c, a, b) - spheres[j].r);
     return radius;
-}
-
-// The capsule around a-b of radius `radius` (the cylinder's members)
-bool SafetyCylinder::contains(const rc::Vec3& p, const rc::Vec3& q) const {
+// END ANSWER
+// BEGIN ANSWER
     // The capsule is convex: both endpoints inside put the whole segment inside
     return segmentDistance(p, a, b) <= radius && segmentDistance(q, a, b) <= radius;
-}
-
-}  // namespace rc
+// END ANSWER

@@ -1,13 +1,7 @@
 // Tutorial 03, a wrong answer the check must reject: both spheres but not the cone between them
-#include <algorithm>
-#include <cmath>
+// BEGIN PREAMBLE
 
-#include <glm/geometric.hpp>
-
-#include "geometry/cone.h"
-
-namespace rc {
-
+// The hull of spheres a and b, the distance to it; Hull::distance() calls it
 static double hullDistanceOf(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
     const rc::Vec3 axis = b.c - a.c;
     const double D = glm::length(axis);
@@ -28,9 +22,10 @@ static double hullDistanceOf(const rc::Vec3& p, const rc::Sphere& a, const rc::S
     (void)along;
     return std::min(std::hypot(x, y) - a.r, std::hypot(x - D, y) - b.r);
 }
-
-// The hull keeps its two spheres; distance() is the function above
-Hull::Hull(const Sphere& a, const Sphere& b) : a_(a), b_(b), nested_(false) {}
-double Hull::distance(const Vec3& p) const { return hullDistanceOf(p, a_, b_); }
-
-}  // namespace rc
+// END PREAMBLE
+// BEGIN ANSWER
+    nested_ = false;  // the hull keeps its two spheres; distance() needs nothing else
+// END ANSWER
+// BEGIN ANSWER
+    return hullDistanceOf(p, a_, b_);
+// END ANSWER

@@ -1,15 +1,6 @@
 // Tutorial 05, a wrong answer the check must reject: beams grow through the 8 neighbours, so rays that touch
 // only at a corner are merged into one beam.
-#include <vector>
-
-#include "analysis/beam_tree.h"
-#include "geometry/student_code.h"
-
-namespace rc {
-
-int BeamTreeBuilder::labelBeams(const std::vector<Ray>& rays, std::vector<int>& index, std::vector<int>& label) const {
-    for (std::size_t i = 0; i < rays.size(); ++i) index[std::size_t(rays[i].pixel)] = int(i);
-    label.assign(rays.size(), -1);
+// BEGIN ANSWER
     // Flood fill connected pixels with equal (origin, hit) keys
     int next = 0;
     std::vector<int> stack;
@@ -35,19 +26,5 @@ int BeamTreeBuilder::labelBeams(const std::vector<Ray>& rays, std::vector<int>& 
         }
         ++next;
     }
-    for (const Ray& r : rays) index[std::size_t(r.pixel)] = -1;
-    return next;
-}
-
-BeamTreeStats BeamTreeBuilder::build() const {
-    BeamTreeStats s;
-    std::vector<int> index(std::size_t(width_) * height_, -1);
-    std::vector<int> label;
-    for (const PathLog& rays : rays_by_path_)
-        if (!rays.blocks.empty()) s.nodes += labelBeams(byPixel(rays), index, label);
-    s.averageRayTreeSize = double(rays_) / (double(width_) * height_);
-    s.coherence = s.nodes > 0 ? s.averageRayTreeSize / double(s.nodes) : 0.0;
-    return s;
-}
-
-}  // namespace rc
+// END ANSWER
+// KEEP SOLUTION
