@@ -235,19 +235,26 @@ def leaks(root, edition, open_tutorials, site=None):
         if rel.split(os.sep)[0] in ('build', '.git'):
             continue
         for name in names:
-            path = os.path.join(dirpath, name)
-            try:
-                lines = open(path, encoding='utf-8').read().split('\n')
-            except (UnicodeDecodeError, OSError):
-                continue
-            for k, line in enumerate(lines):
-                n = norm(line)
-                if n in needles:
-                    print(f'{path}:{k + 1}: a line of {needles[n]}: {n}')
-                    found += 1
+            found += file_leaks(os.path.join(dirpath, name), needles, norm)
     print(f'leak check: {len(needles)} lines of solution regions (25 characters or more; {len(shared)} more '
           f'shared with library code outside the regions) looked for in {edition}: {found} found')
     return found == 0
+
+
+def file_leaks(path, needles, normalise):
+    """How many lines of the text file `path`, each normalised, are needles (each printed as
+    path:line); 0 for a file that is not text."""
+    try:
+        lines = open(path, encoding='utf-8').read().split('\n')
+    except (UnicodeDecodeError, OSError):
+        return 0
+    found = 0
+    for k, line in enumerate(lines):
+        n = normalise(line)
+        if n in needles:
+            print(f'{path}:{k + 1}: a line of {needles[n]}: {n}')
+            found += 1
+    return found
 
 
 def dropped_pages(root):
@@ -276,16 +283,8 @@ def site_leaks(root, site, needles):
             if not name.endswith(('.html', '.js')) or name in dropped:
                 continue
             pages += 1
-            path = os.path.join(dirpath, name)
-            try:
-                lines = open(path, encoding='utf-8').read().split('\n')
-            except (UnicodeDecodeError, OSError):
-                continue
-            for k, line in enumerate(lines):
-                n = norm(html.unescape(re.sub(r'<[^>]*>', '', line)))
-                if n in needles:
-                    print(f'{path}:{k + 1}: a line of {needles[n]}: {n}')
-                    found += 1
+            found += file_leaks(os.path.join(dirpath, name), needles,
+                                lambda line: norm(html.unescape(re.sub(r'<[^>]*>', '', line))))
     print(f'leak check of the docs site {site}: {pages} pages and scripts ({len(dropped)} replaced in the edition '
           f'left out: {", ".join(sorted(dropped))}): {found} lines of solution regions found')
     return found
