@@ -79,6 +79,9 @@ namespace {
 constexpr qint64 kChartEveryMs = 500;
 // The axes reach this much above the largest value, so that its curve does not run along the frame
 constexpr double kAxisHeadroom = 1.05;
+// Axis values from here on are labelled in three significant digits: seven digits and more
+// do not fit beside a chart in a dock
+constexpr double kLongestPlainLabel = 1e6;
 }  // namespace
 
 QString StatsPanel::summaryText() const { return text_->text(); }
@@ -215,7 +218,8 @@ void StatsPanel::refreshChart(const rc::SessionState* state, const rc::SessionSt
     for (QValueAxis* a : {axisX_, axisY_, axisTests_}) {
         a->setTickCount(5);
         a->applyNiceNumbers();
-        a->setLabelFormat(a->max() < 8 ? "%.1f" : "%.0f");
+        // Millions and more in three digits (2e+09, not a cut "2000000..." beside a small chart)
+        a->setLabelFormat(a->max() < 8 ? "%.1f" : a->max() < kLongestPlainLabel ? "%.0f" : "%.3g");
     }
 }
 
