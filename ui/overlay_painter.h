@@ -63,9 +63,6 @@ public:
     const QFont& legendDrawFont() const { return legendFont_; }
     /// The width the last caption and key wanted beside the image (widget pixels).
     double legendWidth() const { return legendWidth_; }
-    /// The narrowest margin the caption and key wrap into (widget pixels). They never go
-    /// over the picture: any margin is used, so this is 0.
-    double legendMinBeside() const { return minBeside_; }
     /// Events a paint reads into the per-pixel layers at most (0: all): a long log is
     /// read over several paints, so that no paint stalls the window. `more` is called
     /// when a paint left events unread, to ask for the next one.
@@ -119,7 +116,6 @@ private:
     QRectF legendKey_;
     double legendWidth_ = 0.0;
     double lineScale_ = 1.0;
-    double minBeside_ = 0.0;  ///< see legendMinBeside()
     LegendLayout layout_;
     std::uint64_t beamSerial_ = 0;  ///< the state beams_ was built from (its serial)
     rc::BeamTreeStats beams_;       ///< the beam tree's size and coherence, for the info box

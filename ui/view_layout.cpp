@@ -28,9 +28,7 @@ void keepLegendBeside(ImageView* view, const OverlayPainter& painter) {
     const QSizeF image = view->image().size();
     const double fitted = image.isEmpty() ? 0.0 : image.width() * std::min(view->width() / image.width(), view->height() / image.height());
     const double room = std::max(0.0, view->width() - fitted);
-    double want = std::min(painter.legendWidth(), std::max(room, view->width() * kLegendShareOfView));
-    // Too narrow to wrap into: the key goes over the picture, which keeps the whole view
-    if (want < painter.legendMinBeside()) want = 0.0;
+    const double want = std::min(painter.legendWidth(), std::max(room, view->width() * kLegendShareOfView));
     if (std::abs(want - view->reserve()) > kLegendRoomSlack)
         QTimer::singleShot(0, view, [view, want] { view->setReserve(want); });
 }
