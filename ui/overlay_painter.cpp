@@ -325,6 +325,9 @@ namespace {
 
 /// Swatch and the gap after it, in line heights: a key's text starts this far in.
 constexpr double kSwatchLines = 1.3;
+/// The swatch itself, in line heights: as wide as a capital, as tall as a lower-case
+/// letter, centred on the line
+constexpr double kSwatchWidth = 0.8, kSwatchHeight = 0.6, kSwatchTop = (1.0 - kSwatchHeight) / 2.0;
 /// Padding inside a box: left and right, top and bottom (widget pixels).
 constexpr double kPadX = 8.0, kPadY = 4.0;
 /// The font scales tried, largest first, until the boxes fit their column: no smaller
@@ -511,7 +514,7 @@ void OverlayPainter::drawKeys(QPainter& p, const LegendText& t) const {
         if (colour.alpha() > 0) {
             p.setPen(QPen(Qt::black, 1));
             p.setBrush(colour);
-            p.drawRect(QRectF(box.left() + kPadX, y + lh * 0.2, lh * 0.8, lh * 0.6));
+            p.drawRect(QRectF(box.left() + kPadX, y + lh * kSwatchTop, lh * kSwatchWidth, lh * kSwatchHeight));
         }
         const double h = wrappedHeight(fm, text, width);
         p.setPen(Qt::white);
