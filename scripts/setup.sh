@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Install what RayCache needs from Debian bookworm, idempotently: a no-op when all is there.
-# Usage: scripts/setup.sh [--with-web] [--with-browser] [--with-valgrind] [--with-profilers]   (as root, or with sudo)
+# Usage: scripts/setup.sh [--with-web] [--with-browser] [--with-valgrind] [--with-profilers] [--with-window-tools]   (as root, or with sudo)
 # --with-web: Emscripten, to build the web edition (preset web); --with-browser: chromium, to test the
 # web edition and look at the docs headless; --with-valgrind: for tests/ui/valgrind_gui.sh;
-# --with-profilers: perf and valgrind, to measure where a render's time goes (see docs/pages/table1.md)
+# --with-profilers: perf and valgrind, to measure where a render's time goes (see docs/pages/table1.md);
+# --with-window-tools: xdotool, xwd and ImageMagick, to drive a real window under xvfb-run and save what it shows
 set -euo pipefail
 
 packages=(
@@ -20,6 +21,7 @@ for option in "$@"; do
     --with-browser) packages+=(chromium) ;;
     --with-valgrind) packages+=(valgrind) ;;
     --with-profilers) packages+=(linux-perf valgrind) ;;
+    --with-window-tools) packages+=(xdotool x11-apps imagemagick) ;;
     *) echo "setup: unknown option $option" >&2; exit 2 ;;
   esac
 done
