@@ -26,10 +26,7 @@ QPen cosmetic(const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine)
     return pen;
 }
 
-QColor withAlpha(QColor c, int a) {
-    c.setAlpha(a);
-    return c;
-}
+using palette::withAlpha;
 
 // Draws a closed outline twice: a dark halo, then the colour, so it reads on any image.
 // An outline holding the whole view has no edge to show: it is only tinted.
@@ -259,8 +256,8 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
         if (u.rebuilt || !u.pixels.empty() || regionsCurrent_ != f.region || regions_.size() != QSize(w, h)) {
             // The marks of the core (rc::regionLayer), in this viewer's colours
             const std::vector<std::uint8_t> marks = rc::regionLayer(regionsIndex_, w, h, f.region);
-            const QRgb colours[3] = {0, qPremultiply(withAlpha(palette::kRegion, 120).rgba()),
-                                     qPremultiply(withAlpha(palette::kRegionEdge, 220).rgba())};
+            const QRgb colours[3] = {0, qPremultiply(withAlpha(palette::kRegion, rc::colours::kRegionOpacity).rgba()),
+                                     qPremultiply(withAlpha(palette::kRegionEdge, rc::colours::kRegionEdgeOpacity).rgba())};
             regions_ = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
             for (int y = 0; y < h; ++y) {
                 auto* line = reinterpret_cast<QRgb*>(regions_.scanLine(y));
@@ -277,16 +274,15 @@ void OverlayPainter::paintFrontier(QPainter& p, const rc::SessionState& s, doubl
     // Queued pixels and deferred seeds: squares of a fixed size on screen, larger with
     // large fonts, so that a class sees them from the back row
     const double size = std::max(1.0, 11.0 * lineScale_ / scale);
-    auto mark = [&](int px, const QColor& c) {
+    auto mark = [&](int px) {
         const QPointF ctr = pixelCentre(px, w);
         p.drawRect(QRectF(ctr.x() - size / 2, ctr.y() - size / 2, size, size));
-        (void)c;
     };
     p.setPen(cosmetic(Qt::black, 1.5 * lineScale_));
     p.setBrush(palette::kDeferred);
-    for (int px : f.deferred) mark(px, palette::kDeferred);
+    for (int px : f.deferred) mark(px);
     p.setBrush(palette::kQueued);
-    for (int px : f.queued) mark(px, palette::kQueued);
+    for (int px : f.queued) mark(px);
 }
 
 void OverlayPainter::paintMisses(QPainter& p, const rc::SessionState& s, double scale, const rc::Selection& sel) {

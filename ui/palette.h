@@ -34,6 +34,12 @@ inline const QColor kShadowLit = qt(rc::colours::kShadowLit);  ///< shadow sampl
 inline const QColor kShadowBlocked = qt(rc::colours::kShadowBlocked);  ///< shadow samples an object stops
 inline const QColor kNoLookups = qt(rc::colours::kNoLookups);  ///< heatmaps: a pixel with no cache lookups
 
+/// `c` with opacity `a` (of 255).
+inline QColor withAlpha(QColor c, int a) {
+    c.setAlpha(a);
+    return c;
+}
+
 /// Colour of a sample ray by its outcome: hit, missed, lit or blocked.
 QColor fanOutcome(rc::FanOutcome o);
 

@@ -25,10 +25,7 @@ namespace rcgui {
 
 namespace {
 
-QColor withAlpha(QColor c, int a) {
-    c.setAlpha(a);
-    return c;
-}
+using palette::withAlpha;
 
 QPen pen(const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine) {
     QPen p(c, width, style, Qt::RoundCap, Qt::RoundJoin);

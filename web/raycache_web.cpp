@@ -281,8 +281,8 @@ public:
         if (regions) {
             const std::vector<std::uint8_t> r = regionLayer(*state_);
             for (std::size_t i = 0; i < r.size(); ++i) {
-                if (r[i] == 1) blend(i, colours::kRegion, 120.0 / 255);
-                else if (r[i] == 2) blend(i, colours::kRegionEdge, 220.0 / 255);
+                if (r[i] == 1) blend(i, colours::kRegion, colours::kRegionOpacity / 255.0);
+                else if (r[i] == 2) blend(i, colours::kRegionEdge, colours::kRegionEdgeOpacity / 255.0);
             }
         }
         if (misses) {
