@@ -2,13 +2,16 @@
 """The web edition gives the native bytes: for every scene, cache and order, the viewer page
 in headless Chromium writes into #image-hash the SHA-256 that `raycache render --hash`
 prints. Each scene's first render comes from the page's URL (?scene=...&run=end), the
-others from its controls (Start over, Run to end). Exits 1 on any difference.
+others from its controls (Start over, Run to end). The page's cache and order menus must
+offer what the CLI's registries hold, in their order. Exits 1 on any difference.
+--scenes and --caches narrow the runs (the page built with the toy cache is checked so,
+against the raycache built with it).
 
 --bench instead times cube:5 at 256x256 in the page (its worker's time to the end) and
 natively (`raycache render`'s), same cache and order, median of --repeat runs each.
 
 Usage: web_hashes.py --cli build/src/raycache --page build-web/web/index.html
-           --scenes-dir scenes [--width 20 --height 16] [--bench]"""
+           --scenes-dir scenes [--width 20 --height 16] [--scenes a,b] [--caches a,b] [--bench]"""
 import argparse
 import json
 import pathlib
@@ -87,12 +90,26 @@ def check_dropped(browser, a):
     return wrong
 
 
+def menu(browser, name):
+    return browser.evaluate(f"[...document.getElementById('{name}').options].map((o) => o.value)")
+
+
 def check_hashes(a):
-    caches, orders = registered(a.cli, "caches"), registered(a.cli, "orders")
-    scenes = BUILTINS + ["scenes/" + p.name for p in sorted(pathlib.Path(a.scenes_dir).glob("*.nff"))]
+    offered = {what: registered(a.cli, what) for what in ("caches", "orders")}
+    caches = a.caches.split(",") if a.caches else offered["caches"]
+    orders = offered["orders"]
+    scenes = a.scenes.split(",") if a.scenes else \
+        BUILTINS + ["scenes/" + p.name for p in sorted(pathlib.Path(a.scenes_dir).glob("*.nff"))]
     browser = Browser(a.chromium)
-    matched, wrong = 0, []
+    matched, wrong, menus = 0, [], []
     try:
+        # The menus hold the registries (a name only the URL gave would be added last)
+        browser.open(page_url(a.page, scenes[0], a.width, a.height, offered["caches"][0], orders[0]))
+        web_hash(browser, a.timeout)  # the menus are filled once the module is in
+        for what, names in offered.items():
+            shown = menu(browser, what[:-1])
+            if shown != names:
+                menus.append(f"the page's {what[:-1]} menu offers {shown}, the registry {names}")
         for scene in scenes:
             native_scene = str(pathlib.Path(a.scenes_dir) / scene[len("scenes/"):]) if scene.startswith("scenes/") else scene
             first = True
@@ -109,15 +126,17 @@ def check_hashes(a):
                         matched += 1
                     else:
                         wrong.append(f"{scene} {cache} {order}: web {got}, native {expected}")
-        dropped = check_dropped(browser, a)
+        dropped = [] if a.scenes else check_dropped(browser, a)
     finally:
         browser.close()
-    for w in wrong + dropped:
+    for w in menus + wrong + dropped:
         print("DIFFERENT", w)
     print(f"{matched} of {matched + len(wrong)} web hashes equal the native ones "
           f"({len(scenes)} scenes x {len(caches)} caches x {len(orders)} orders at {a.width}x{a.height})")
-    print("dropped files: " + ("as native" if not dropped else f"{len(dropped)} wrong"))
-    return 0 if not wrong and not dropped and matched == len(scenes) * len(caches) * len(orders) else 1
+    print("menus: " + ("the registries'" if not menus else f"{len(menus)} differ"))
+    if not a.scenes:
+        print("dropped files: " + ("as native" if not dropped else f"{len(dropped)} wrong"))
+    return 0 if not menus and not wrong and not dropped and matched == len(scenes) * len(caches) * len(orders) else 1
 
 
 def web_seconds(browser):
@@ -162,6 +181,9 @@ def main():
     p.add_argument("--chromium", default="chromium")
     p.add_argument("--width", type=int, default=20)
     p.add_argument("--height", type=int, default=16)
+    p.add_argument("--scenes", help="comma-separated scenes (default: the built-in ones and every file of "
+                   "--scenes-dir; the dropped-file check runs only then)")
+    p.add_argument("--caches", help="comma-separated caches (default: every registered one)")
     p.add_argument("--timeout", type=float, default=60.0)
     p.add_argument("--bench", action="store_true")
     p.add_argument("--repeat", type=int, default=5)
