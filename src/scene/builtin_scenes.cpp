@@ -217,37 +217,44 @@ bool endsWithNff(const std::string& s) {
 
 }  // namespace
 
-std::vector<BuiltinInfo> builtinScenes() {
-    return {
-        {"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), after the paper's Table 1 scene",
-         {2, 3, 4, 5, 6, 8}},
-        {"balls:N",
-         "SPD's sphereflake of size N (1 <= N <= " + std::to_string(kMaxSphereflake) +
-             "): 1 + 9 + ... + 9^N mirrored spheres on a ground square; SPD's default is balls:4",
-         {1, 2, 3, 4, 5}},
-        {"glass", "refracting glass spheres in front of and among opaque ones, on a ground square", {}},
-        {"fill", "one diffuse sphere filling the 64x64 view, lit from the eye: coherence 1", {}},
-        {"pair", "a big mirror sphere reflecting a small one, the paper's Figure 2", {}},
-        {"trio", "the pair with a third sphere in the hull between them: Figure 2's potential blocker", {}},
-    };
+// [scene-registry]
+const Registry<BuiltinInfo>& builtinScenes() {
+    static const Registry<BuiltinInfo> r = [] {
+        Registry<BuiltinInfo> b;
+        b.add({"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), after the paper's Table 1 scene",
+               {2, 3, 4, 5, 6, 8}, kMaxCube, "", [](int n, std::uint64_t seed) { return makeCube(n, seed); }});
+        b.add({"balls:N",
+               "SPD's sphereflake of size N (1 <= N <= " + std::to_string(kMaxSphereflake) +
+                   "): 1 + 9 + ... + 9^N mirrored spheres on a ground square; SPD's default is balls:4",
+               {1, 2, 3, 4, 5}, kMaxSphereflake,
+               "balls:" + std::to_string(kMaxSphereflake) + " has " +
+                   std::to_string(sphereflakeSpheres(kMaxSphereflake)) + " spheres",
+               [](int n, std::uint64_t) { return makeSphereflake(n); }});
+        b.add({"glass", "refracting glass spheres in front of and among opaque ones, on a ground square", {}, 0, "",
+               [](int, std::uint64_t seed) { return makeGlass(seed); }});
+        b.add({"fill", "one diffuse sphere filling the 64x64 view, lit from the eye: coherence 1", {}, 0, "",
+               [](int, std::uint64_t) { return makeFill(); }});
+        b.add({"pair", "a big mirror sphere reflecting a small one, the paper's Figure 2", {}, 0, "",
+               [](int, std::uint64_t) { return makePair(); }});
+        b.add({"trio", "the pair with a third sphere in the hull between them: Figure 2's potential blocker", {}, 0, "",
+               [](int, std::uint64_t) { return makeTrio(); }});
+        return b;
+    }();
+    return r;
 }
+// [scene-registry]
 
 Scene makeBuiltin(const std::string& spec, std::uint64_t seed) {
-    if (spec == "glass") return makeGlass(seed);
-    if (spec == "fill") return makeFill();
-    if (spec == "pair") return makePair();
-    if (spec == "trio") return makeTrio();
-    const std::string usage = "expected cube:N with N a whole number from 1 to " + std::to_string(kMaxCube);
-    if (spec == "cube" || spec == "cube:") throw SceneError(spec, 0, 0, "the cube scene needs a size: " + usage);
-    if (spec.rfind("cube:", 0) == 0) return makeCube(sizeOf(spec, "cube:", kMaxCube, "cube", usage), seed);
-    const std::string ballsUsage =
-        "expected balls:N with N a whole number from 1 to " + std::to_string(kMaxSphereflake) +
-        " (balls:" + std::to_string(kMaxSphereflake) + " has " +
-        std::to_string(sphereflakeSpheres(kMaxSphereflake)) + " spheres)";
-    if (spec == "balls" || spec == "balls:")
-        throw SceneError(spec, 0, 0, "the balls scene needs a size: " + ballsUsage);
-    if (spec.rfind("balls:", 0) == 0)
-        return makeSphereflake(sizeOf(spec, "balls:", kMaxSphereflake, "balls", ballsUsage));
+    if (const BuiltinInfo* b = builtinScenes().find(spec); b && b->maxSize == 0) return b->make(0, seed);
+    // A sized scene, "name:N": its entry is registered as "name:N"
+    const std::string base = spec.substr(0, spec.find(':'));
+    if (const BuiltinInfo* b = builtinScenes().find(base + ":N"); b && b->maxSize > 0) {
+        const std::string usage = "expected " + b->name + " with N a whole number from 1 to " +
+                                  std::to_string(b->maxSize) + (b->sizeNote.empty() ? "" : " (" + b->sizeNote + ")");
+        if (spec == base || spec == base + ":")
+            throw SceneError(spec, 0, 0, "the " + base + " scene needs a size: " + usage);
+        return b->make(sizeOf(spec, base + ":", b->maxSize, base.c_str(), usage), seed);
+    }
     std::string names;
     for (const BuiltinInfo& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;
     throw SceneError(spec, 0, 0, "unknown scene '" + spec + "': not a file, and not a built-in scene (" +

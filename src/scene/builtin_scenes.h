@@ -7,24 +7,31 @@
 /// from std::mt19937_64 and are turned into doubles by hand, never through the
 /// implementation-defined std::uniform_real_distribution.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "scene/registry.h"
 #include "scene/scene.h"
 
 namespace rc {
 
-/// A built-in scene's name as the command line takes it (e.g. "cube:N") and one line
-/// that describes it.
+/// A built-in scene's name as the command line takes it (e.g. "cube:N"), one line that
+/// describes it, and what makes it.
 struct BuiltinInfo {
     std::string name;
     std::string description;
     /// For a name ending in ":N": a few sizes worth offering in a menu, smallest first.
     std::vector<int> sizes;
+    int maxSize = 0;        ///< the largest N of a name ending in ":N"; 0 for a scene without a size
+    std::string sizeNote;   ///< what the largest N means, for the message about a bad N ("" for none)
+    /// Builds the scene of size `n` (0 for one without a size) with `seed`.
+    std::function<Scene(int n, std::uint64_t seed)> make;
 };
 
-/// Every built-in scene, in the order `raycache scenes` lists them.
-std::vector<BuiltinInfo> builtinScenes();
+/// Every built-in scene, in the order `raycache scenes` lists them; a new one is one entry
+/// in builtin_scenes.cpp, and the CLI, the GUI's and the page's scene menus list it.
+const Registry<BuiltinInfo>& builtinScenes();
 
 /// Builds the built-in scene named by `spec`:
 /// - `cube:N` (1 <= N <= 64): RayCache's reconstruction of the paper's Table 1 scene (the

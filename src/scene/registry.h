@@ -28,6 +28,8 @@ public:
         return int(entries_.size()) - 1;
     }
     const std::vector<Entry>& entries() const { return entries_; }
+    auto begin() const { return entries_.begin(); }
+    auto end() const { return entries_.end(); }
     std::size_t size() const { return entries_.size(); }
     const Entry& operator[](std::size_t i) const { return entries_.at(i); }
     /// The entry named `name`, or null.
