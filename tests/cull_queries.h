@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/cone.h"
+#include "geometry/safety_cylinder.h"
 #include "search/complete_search.h"
 
 namespace rc::testing {
@@ -32,11 +33,7 @@ struct NearestToSegment final : SphereCull {
         b = q;
         limit = kNoHit;
     }
-    double distance(const Sphere& s) override {
-        const Vec3 ab = b - a;
-        const double t = glm::clamp(glm::dot(s.c - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
-        return glm::length(s.c - (a + t * ab)) - s.r;
-    }
+    double distance(const Sphere& s) override { return segmentDistance(s.c, a, b) - s.r; }
     void found(int id, double d) override {
         if (d < limit || (d == limit && id < nearest)) nearest = id;
         limit = std::min(limit, d);

@@ -84,8 +84,10 @@ TEST_CASE("the beam tree does not depend on the cache or order", "[beam]") {
 
 namespace {
 /// The beam tree counted a second way: a dense key image per ray-tree path (what the
-/// builder kept before it stored only the rays) and union-find over right and lower
-/// neighbours instead of a flood fill.
+/// builder kept before it stored only the rays), labelled by brute force as the tutorials'
+/// oracles do (every present pixel starts with its own label; sweep after sweep each takes
+/// the least label of its 4-neighbours with the same key, until none changes), not by a
+/// fill or union-find that would answer tutorial 05 in the student edition.
 class DenseBeamCount final : public TraceSink {
 public:
     DenseBeamCount(int width, int height) : width_(width), height_(height) {}
@@ -99,20 +101,19 @@ public:
     std::int64_t nodes() const {
         std::int64_t n = 0;
         for (const auto& [path, key] : keys_) {
-            std::vector<int> parent(key.size());
-            for (std::size_t p = 0; p < key.size(); ++p) parent[p] = int(p);
-            auto find = [&](int p) {
-                while (parent[p] != p) p = parent[p] = parent[parent[p]];
-                return p;
-            };
-            for (int y = 0; y < height_; ++y)
-                for (int x = 0; x < width_; ++x) {
-                    const int p = y * width_ + x;
+            std::vector<int> label(key.size());
+            for (std::size_t p = 0; p < key.size(); ++p) label[p] = int(p);
+            for (bool changed = true; changed;) {
+                changed = false;
+                for (int p = 0; p < width_ * height_; ++p) {
                     if (key[p] == kAbsent) continue;
-                    if (x + 1 < width_ && key[p + 1] == key[p]) parent[find(p + 1)] = find(p);
-                    if (y + 1 < height_ && key[p + width_] == key[p]) parent[find(p + width_)] = find(p);
+                    const int x = p % width_, y = p / width_;
+                    for (const int q : {x > 0 ? p - 1 : -1, x + 1 < width_ ? p + 1 : -1, y > 0 ? p - width_ : -1,
+                                        y + 1 < height_ ? p + width_ : -1})
+                        if (q >= 0 && key[q] == key[p] && label[q] < label[p]) label[p] = label[q], changed = true;
                 }
-            for (std::size_t p = 0; p < key.size(); ++p) n += key[p] != kAbsent && find(int(p)) == int(p);
+            }
+            for (std::size_t p = 0; p < key.size(); ++p) n += key[p] != kAbsent && label[p] == int(p);
         }
         return n;
     }

@@ -161,9 +161,7 @@ TEST_CASE("grid culls find exactly what a scan over every object finds", "[grid]
         std::sort(near.begin(), near.end());
         for (int id = 0; id < scene.size(); ++id) {
             const Sphere& b = scene.objects[id].bound;
-            const Vec3 ab = to.c - from.c;
-            const double t = glm::clamp(glm::dot(b.c - from.c, ab) / glm::dot(ab, ab), 0.0, 1.0);
-            if (glm::length(b.c - (from.c + t * ab)) - b.r <= all.radius)
+            if (segmentDistance(b.c, from.c, to.c) - b.r <= all.radius)
                 REQUIRE(std::binary_search(near.begin(), near.end(), id));
         }
     }

@@ -1,10 +1,7 @@
 #pragma once
 /// \file
 /// \brief How near a segment comes to the objects: the radius of a cylinder of safety.
-#include <algorithm>
-
-#include <glm/geometric.hpp>
-
+#include "geometry/safety_cylinder.h"
 #include "search/sphere_cull.h"
 
 namespace rc {
@@ -16,18 +13,13 @@ namespace rc {
 struct SegmentClearance final : SphereCull {
     /// `stopBelow`: once an object lies nearer than this, stop; `least` is then its distance
     SegmentClearance(const Vec3& from, const Vec3& to, int skip, int skipToo, double cap, double stopBelow)
-        : ab(to - from), skip(skip), skipToo(skipToo), stopBelow(stopBelow), least(cap) {
+        : skip(skip), skipToo(skipToo), stopBelow(stopBelow), least(cap) {
         a = from;
         b = to;
-        const double len2 = glm::dot(ab, ab);
-        invLen2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
         radius = limit = cap;
     }
-    double distance(const Sphere& s) override {
-        const Vec3 p = s.c - a;
-        const double t = std::clamp(glm::dot(p, ab) * invLen2, 0.0, 1.0);
-        return glm::length(p - t * ab) - s.r;
-    }
+    /// From the sphere's surface: rc::segmentDistance (tutorial 02's hole) less its radius
+    double distance(const Sphere& s) override { return segmentDistance(s.c, a, b) - s.r; }
     void found(int id, double d) override {
         if (id == skip || id == skipToo || !(d < least)) return;
         least = d;
@@ -35,8 +27,6 @@ struct SegmentClearance final : SphereCull {
         // Below the stop, the search is over: nothing more can meet the limit
         limit = least < stopBelow ? -kNoHit : least;
     }
-    Vec3 ab;
-    double invLen2;
     int skip, skipToo;
     double stopBelow;
     double least;      ///< the clearance so far (at most the cap)

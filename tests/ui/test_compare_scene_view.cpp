@@ -247,9 +247,7 @@ TEST_CASE("Scene view, the paper's Figure 1: along the ray, the cylinder is much
     int nearest = -1;
     for (int id = 1; id < scene.size(); ++id) {
         const rc::Sphere& s = scene.objects[std::size_t(id)].bound;
-        const rc::Vec3 ab = end - k.focus->ray.o;
-        const double t = std::clamp(glm::dot(s.c - k.focus->ray.o, ab) / glm::dot(ab, ab), 0.0, 1.0);
-        const double g = glm::length(s.c - (k.focus->ray.o + t * ab)) - s.r;
+        const double g = rc::segmentDistance(s.c, k.focus->ray.o, end) - s.r;
         if (g < gap) {
             gap = g;
             nearest = id;

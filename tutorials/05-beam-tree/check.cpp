@@ -63,25 +63,30 @@ struct Oracle {
     std::int64_t nodes = 0;
     double coherence = 0.0;
 };
+// The oracle's labels of one path image (each pixel's least label after the sweeps)
+std::vector<int> oracleLabels(int width, int height, const tutorial::PathImage& at) {
+    auto same = [&](int p, int q) {
+        return at[p].present && at[q].present && at[p].origin == at[q].origin && at[p].inside == at[q].inside &&
+               at[p].hit == at[q].hit;
+    };
+    std::vector<int> label(at.size());
+    for (int p = 0; p < width * height; ++p) label[p] = p;
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int p = 0; p < width * height; ++p) {
+            if (!at[p].present) continue;
+            const int x = p % width, y = p / width;
+            for (int q : {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > 0 ? p - width : -1,
+                          y + 1 < height ? p + width : -1})
+                if (q >= 0 && same(p, q) && label[q] < label[p]) label[p] = label[q], changed = true;
+        }
+    }
+    return label;
+}
 Oracle oracle(int width, int height, const std::vector<tutorial::PathImage>& paths) {
     std::int64_t rays = 0, beams = 0;
     for (const tutorial::PathImage& at : paths) {
-        auto same = [&](int p, int q) {
-            return at[p].present && at[q].present && at[p].origin == at[q].origin && at[p].inside == at[q].inside &&
-                   at[p].hit == at[q].hit;
-        };
-        std::vector<int> label(at.size());
-        for (int p = 0; p < width * height; ++p) label[p] = p;
-        for (bool changed = true; changed;) {
-            changed = false;
-            for (int p = 0; p < width * height; ++p) {
-                if (!at[p].present) continue;
-                const int x = p % width, y = p / width;
-                for (int q : {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > 0 ? p - width : -1,
-                              y + 1 < height ? p + width : -1})
-                    if (q >= 0 && same(p, q) && label[q] < label[p]) label[p] = label[q], changed = true;
-            }
-        }
+        const std::vector<int> label = oracleLabels(width, height, at);
         for (int p = 0; p < width * height; ++p) {
             rays += at[p].present;
             beams += at[p].present && label[p] == p;
@@ -133,11 +138,11 @@ std::string drawBeams(int width, int height, const std::vector<tutorial::PathIma
     long beams = 0;
     for (int k = 0; k < panels; ++k) {
         const tutorial::PathImage& image = paths[k];
-        // Two partitions of the pixels: the one your merges make, and the rule's (4-neighbours
-        // with the same origin, side and hit)
-        std::vector<int> parent(image.size()), rule(image.size());
+        // Two partitions of the pixels: the one your merges make, and the rule's (the oracle's
+        // labels: 4-neighbours with the same origin, side and hit)
+        std::vector<int> parent(image.size());
         std::iota(parent.begin(), parent.end(), 0);
-        std::iota(rule.begin(), rule.end(), 0);
+        const std::vector<int> rule = oracleLabels(width, height, image);
         auto find = [](std::vector<int>& up, int p) {
             while (up[p] != p) p = up[p] = up[up[p]];
             return p;
@@ -153,9 +158,6 @@ std::string drawBeams(int width, int height, const std::vector<tutorial::PathIma
                 two[p] = image[p], two[q] = image[q];
                 if (tutorial::beamTree(width, height, {two}).beams == 1) parent[find(parent, p)] = find(parent, q);
                 two[p] = two[q] = tutorial::PixelRay{};
-                if ((q == p + 1 || q == p + width) && image[p].origin == image[q].origin &&
-                    image[p].inside == image[q].inside && image[p].hit == image[q].hit)
-                    rule[find(rule, p)] = find(rule, q);
             }
         }
         // A beam of yours that joins two of the rule's, or a beam of the rule's you split: magenta
@@ -163,7 +165,7 @@ std::string drawBeams(int width, int height, const std::vector<tutorial::PathIma
         std::vector<char> bad(image.size(), 0);
         for (int p = 0; p < width * height; ++p) {
             if (!image[p].present) continue;
-            const int a = find(parent, p), b = find(rule, p);
+            const int a = find(parent, p), b = rule[p];
             if (ruleOf[a] < 0) ruleOf[a] = b;
             if (yoursOf[b] < 0) yoursOf[b] = a;
             if (ruleOf[a] != b) bad[a] = 1;
