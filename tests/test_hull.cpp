@@ -115,3 +115,18 @@ TEST_CASE("capsule containment is the containment of both endpoints", "[cylinder
     }
     REQUIRE(segmentDistance(Vec3(5, 3, 4), Vec3(0), Vec3(10, 0, 0)) == Approx(5.0));
 }
+
+TEST_CASE("a segment's start is exactly 0 from it: the cylinder probe does not measure it", "[cylinder]") {
+    // CylinderOfSafety::probe takes 0 for a ray from the kept segment's start (an eye ray
+    // after an eye ray) instead of measuring it: the measure must give exactly 0 there
+    Random rng(42);
+    const Uniform u{-1e3, 1e3};
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+        REQUIRE(segmentDistance(a, a, b) == 0.0);
+        REQUIRE(segmentDistance(a, a, a) == 0.0);  // a segment that is a point
+        REQUIRE(SafetyCylinder{a, b * 1e-9, 1.0}.distance(a) == 0.0);
+    }
+    // and the end is not the start: it is measured
+    REQUIRE(segmentDistance(Vec3(0, 1, 0), Vec3(0), Vec3(1, 0, 0)) == 1.0);
+}

@@ -42,13 +42,6 @@ Lookup CacheStrategy::searchAndReload(const Query& q, CacheEntry& e, MissReason 
     // [search-and-reload]
 }
 
-MissReason CacheStrategy::unusable(const Query& q, const CacheEntry& e) {
-    if (e.state == CacheEntry::State::Empty) return MissReason::Cold;
-    if (e.state == CacheEntry::State::Flushed) return MissReason::Flushed;
-    if (!(e.origin == q.origin)) return MissReason::OriginChanged;
-    return MissReason::None;
-}
-
 std::unique_ptr<CacheStrategy> makeStrategy(CacheKind kind, const Scene& scene,
                                             const CompleteSearch& search) {
     return cacheInfo(kind).make(scene, search);

@@ -94,8 +94,14 @@ protected:
     /// A complete search, counted, and the entry reloaded with its answer.
     Lookup searchAndReload(const Query& q, CacheEntry& e, MissReason why, Counters& n);
     virtual void reload(const Query& q, const Answer& a, CacheEntry& e, Counters& n) = 0;
-    /// Why an entry cannot answer this query at all, or None when it may.
-    static MissReason unusable(const Query& q, const CacheEntry& e);
+    /// Why an entry cannot answer this query at all, or None when it may (inline: asked
+    /// once per lookup).
+    static MissReason unusable(const Query& q, const CacheEntry& e) {
+        if (e.state == CacheEntry::State::Empty) return MissReason::Cold;
+        if (e.state == CacheEntry::State::Flushed) return MissReason::Flushed;
+        if (!(e.origin == q.origin)) return MissReason::OriginChanged;
+        return MissReason::None;
+    }
     const Scene& scene_;
     const CompleteSearch& search_;
     double slack_;  ///< a few ulps of the scene's size: shrinks cylinders and cones

@@ -89,7 +89,10 @@ Lookup CylinderOfSafety::probe(const Query& q, CacheEntry& e, Counters& n) const
     // a segment may fit in it). The capsule is convex: both ends inside is enough
     ++n.cylinderTests;
     const Vec3 end = segmentEnd(q, a);
-    const double strays = std::max(e.cylinder.distance(q.ray.o), e.cylinder.distance(end));
+    // A ray from the kept segment's own start (an eye ray after an eye ray) strays 0 there:
+    // the distance of a segment's end point is exactly 0, so it is not measured
+    const double fromStart = q.ray.o == e.cylinder.a ? 0.0 : e.cylinder.distance(q.ray.o);
+    const double strays = std::max(fromStart, e.cylinder.distance(end));
     if (e.pending) buildFor(e, strays, n);
     if (!(strays <= e.cylinder.radius)) return {false, {}, Decision::Miss, MissReason::LeftCylinder};
     return {true, a, Decision::Hit, MissReason::None};

@@ -5,38 +5,30 @@
 
 namespace rc {
 
-void ListTable::refill(const std::vector<std::uint64_t>& keys, const std::vector<std::uint32_t>& numbers,
-                       std::size_t size, std::uint32_t n) {
-    keys_.assign(size, 0);
-    numbers_.assign(size, 0);
+void ListTable::refill(const std::vector<Slot>& old, std::size_t size, std::uint32_t n) {
+    slots_.assign(size, Slot{});
     count_ = 0;
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-        if (keys[k] == 0 || numbers[k] >= n) continue;
-        const std::size_t to = slot(keys[k] - 1);
-        keys_[to] = keys[k];
-        numbers_[to] = numbers[k];
+    for (const Slot& s : old) {
+        if (s.key == 0 || s.number >= n) continue;
+        slots_[slot(s.key - 1)] = s;
         ++count_;
     }
 }
 
 void ListTable::insert(std::uint64_t key, std::uint32_t number) {
     // Keep the table at most half full
-    if (2 * (count_ + 1) > keys_.size()) {
-        const std::vector<std::uint64_t> keys = std::move(keys_);
-        const std::vector<std::uint32_t> numbers = std::move(numbers_);
-        refill(keys, numbers, std::max<std::size_t>(64, 2 * keys.size()), kNone);
+    if (2 * (count_ + 1) > slots_.size()) {
+        const std::vector<Slot> old = std::move(slots_);
+        refill(old, std::max<std::size_t>(64, 2 * old.size()), kNone);
     }
-    const std::size_t k = slot(key);
-    keys_[k] = key + 1;
-    numbers_[k] = number;
+    slots_[slot(key)] = {key + 1, number};
     ++count_;
 }
 
 void ListTable::keepBelow(std::uint32_t n) {
     // Open addressing cannot erase in place: the keys kept go back into an empty table
-    const std::vector<std::uint64_t> keys = std::move(keys_);
-    const std::vector<std::uint32_t> numbers = std::move(numbers_);
-    refill(keys, numbers, keys.size(), n);
+    const std::vector<Slot> old = std::move(slots_);
+    refill(old, old.size(), n);
 }
 
 }  // namespace rc
