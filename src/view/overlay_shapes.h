@@ -44,7 +44,7 @@ struct OverlayShape {
     bool covers = false;  ///< the outline holds the whole clip rectangle (tint it, do not stroke it)
     bool flat = false;    ///< the outline is a polygon's (it may hold much of the view: outline only)
     int object = -1;      ///< the scene object it outlines, -1 for none
-    std::string label;    ///< e.g. "blocker #12"
+    std::string label{};  ///< e.g. "blocker #12"
 };
 
 /// Which overlays to make.
