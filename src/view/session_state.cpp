@@ -93,13 +93,14 @@ bool SessionState::runUntil(RunGoal goal, std::int64_t target, const std::atomic
         if (!step()) return true;
         const auto& events = recorder_.events();
         if (goal == RunGoal::NextMiss || goal == RunGoal::NextDeferral) {
-            for (std::size_t i = eventsBefore; i < events.size(); ++i) {
+            for (auto it = events.from(eventsBefore); it != events.end(); ++it) {
+                const EventRecord e = *it;
                 const bool met = goal == RunGoal::NextDeferral
-                                     ? events[i].deferred()
-                                     : !events[i].deferred() && events[i].rayDecision() == rc::Decision::Miss &&
-                                           (missFilter_ == rc::MissReason::None || events[i].missReason() == missFilter_);
+                                     ? e.deferred()
+                                     : !e.deferred() && e.rayDecision() == rc::Decision::Miss &&
+                                           (missFilter_ == rc::MissReason::None || e.missReason() == missFilter_);
                 if (met) {
-                    stopEvent_ = int(i);
+                    stopEvent_ = int(it.index());
                     return true;
                 }
             }
