@@ -118,20 +118,18 @@ int showcaseEvent(const SessionState& s) {
     const auto& events = s.recorder().events();
     int best = -1;
     for (const bool reflected : {true, false}) {
-        for (int i = int(events.size()) - 1; i >= 0 && best < 0; --i) {
-            const EventRecord& r = events[std::size_t(i)];
-            if (r.deferred() || r.hit < 0) continue;
-            if (reflected != (r.rayKind() == RayKind::Reflection) || (!reflected && r.node != 0)) continue;
-            if (!lists) return i;
+        best = int(events.findBackward(events.size(), [&](std::size_t, const EventRecord& r) {
+            if (r.deferred() || r.hit < 0) return false;
+            if (reflected != (r.rayKind() == RayKind::Reflection) || (!reflected && r.node != 0)) return false;
+            if (!lists) return true;
             const int origin = r.origin >= 0 ? r.origin : lists->eyeSite();
             const std::vector<int>* l = lists->find(origin, r.hit);
-            if (l && !l->empty()) best = i;
-        }
+            return l && !l->empty();
+        }));
         if (best >= 0) return best;
     }
-    for (int i = int(events.size()) - 1; i >= 0; --i)
-        if (!events[std::size_t(i)].deferred() && events[std::size_t(i)].hit >= 0) return i;
-    return -1;
+    return int(events.findBackward(events.size(),
+                                   [](std::size_t, const EventRecord& r) { return !r.deferred() && r.hit >= 0; }));
 }
 
 }  // namespace rc

@@ -18,8 +18,9 @@ PathIndex::Update PathIndex::update(const TraceRecorder& rec, std::uint64_t seri
     }
     // Read the new events in order: the newest committed one at the path wins
     const std::size_t end = budget == 0 ? events.size() : std::min(events.size(), read_ + budget);
-    for (std::size_t i = read_; i < end; ++i) {
-        const EventRecord& e = events[i];
+    for (auto it = events.from(read_); it.index() < end; ++it) {
+        const std::size_t i = it.index();
+        const EventRecord e = *it;
         if (e.node != node || e.deferred()) continue;
         at_[std::size_t(e.pixel)] = {std::int32_t(i), e.region, e.decision, e.reason};
         if (!u.rebuilt) u.pixels.push_back(e.pixel);

@@ -21,22 +21,36 @@ SessionState::SessionState(SessionConfig config)
       session_(makeSession(config_)),
       camera_(config_.scene->camera, session_->width(), session_->height()),
       recorder_(session_->width(), session_->height(), &session_->order()),
-      beams_(session_->width(), session_->height()),
       checkpoints_(config_.checkpointEvery) {
     session_->addSink(&recorder_);
-    session_->addSink(&beams_);
     sample();
     checkpoint();
 }
 
 SessionState::~SessionState() {
     session_->removeSink(&recorder_);
-    session_->removeSink(&beams_);
 }
 
 const SampleFan& SessionState::fan(int pixel) const {
     if (!fan_ || fan_->pixel != pixel) fan_ = std::make_unique<SampleFan>(SampleFan::trace(*session_, pixel));
     return *fan_;
+}
+
+const rc::BeamTreeBuilder& SessionState::beams() const {
+    const EventLog& events = recorder_.events();
+    // A new serial (Step back) or a log cut back: start over
+    if (!beams_ || beamsSerial_ != serial_ || beamsRead_ > events.size()) {
+        beams_ = std::make_unique<rc::BeamTreeBuilder>(width(), height());
+        beamsRead_ = 0;
+        beamsSerial_ = serial_;
+    }
+    // Committed rays only, as rc::BeamTreeBuilder::onEvent takes them from the render
+    for (auto it = events.from(beamsRead_); it != events.end(); ++it) {
+        const EventRecord r = *it;
+        if (!r.deferred()) beams_->record(r.node, r.pixel, r.origin, r.flags & EventRecord::Inside, r.hit);
+    }
+    beamsRead_ = events.size();
+    return *beams_;
 }
 
 void SessionState::sample() {
@@ -50,20 +64,18 @@ void SessionState::checkpoint() {
     const StepCheckpoint* last = checkpoints_.last();
     session_->checkpointInto(c.session, last ? &last->session : nullptr);
     c.recorder = recorder_.mark();
-    c.beams = beams_.mark();
     checkpoints_.add(std::move(c));
 }
 
 std::int64_t SessionState::rewindTo(std::int64_t step) {
     // [rewind]
-    // The latest checkpoint at or before the step: the render, its recorder and its
-    // beams go back to it; what is left is replayed by stepping
+    // The latest checkpoint at or before the step: the render and its recorder go back
+    // to it; what is left is replayed by stepping
     if (step < 0 || step >= session_->steps()) return 0;
     const StepCheckpoint* c = checkpoints_.backTo(step);
     if (!c) return 0;  // never: step 0 always has one
     session_->restore(c->session);
     recorder_.rollback(c->recorder);
-    beams_.rollback(c->beams);
     // [rewind]
     stopEvent_ = -1;
     fan_.reset();
@@ -93,13 +105,14 @@ bool SessionState::runUntil(RunGoal goal, std::int64_t target, const std::atomic
         if (!step()) return true;
         const auto& events = recorder_.events();
         if (goal == RunGoal::NextMiss || goal == RunGoal::NextDeferral) {
-            for (std::size_t i = eventsBefore; i < events.size(); ++i) {
+            for (auto it = events.from(eventsBefore); it != events.end(); ++it) {
+                const EventRecord e = *it;
                 const bool met = goal == RunGoal::NextDeferral
-                                     ? events[i].deferred()
-                                     : !events[i].deferred() && events[i].rayDecision() == rc::Decision::Miss &&
-                                           (missFilter_ == rc::MissReason::None || events[i].missReason() == missFilter_);
+                                     ? e.deferred()
+                                     : !e.deferred() && e.rayDecision() == rc::Decision::Miss &&
+                                           (missFilter_ == rc::MissReason::None || e.missReason() == missFilter_);
                 if (met) {
-                    stopEvent_ = int(i);
+                    stopEvent_ = int(it.index());
                     return true;
                 }
             }

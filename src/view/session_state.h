@@ -65,7 +65,9 @@ public:
     const rc::Scene& scene() const { return *config_.scene; }
     const rc::RenderSession& session() const { return *session_; }
     const TraceRecorder& recorder() const { return recorder_; }
-    const rc::BeamTreeBuilder& beams() const { return beams_; }
+    /// The beam tree's builder, fed from the recorder's events when asked (only the events
+    /// added since the last ask): a page that never asks keeps no second copy of its rays.
+    const rc::BeamTreeBuilder& beams() const;
     /// The session's camera, to project world points to fractional pixel positions.
     const rc::RayGenerator& camera() const { return camera_; }
     int width() const { return session_->width(); }
@@ -87,7 +89,9 @@ private:
     std::unique_ptr<rc::RenderSession> session_;
     rc::RayGenerator camera_;
     TraceRecorder recorder_;
-    rc::BeamTreeBuilder beams_;
+    mutable std::unique_ptr<rc::BeamTreeBuilder> beams_;
+    mutable std::size_t beamsRead_ = 0;      ///< events beams_ has been given
+    mutable std::uint64_t beamsSerial_ = 0;  ///< the serial() they belong to
     mutable std::unique_ptr<SampleFan> fan_;
     StepCheckpoints checkpoints_;
 };

@@ -60,8 +60,7 @@ std::size_t StepCheckpoints::bytes() const {
     std::size_t b = 0;
     std::unordered_set<const void*> rows;
     for (const StepCheckpoint& c : list_) {
-        b += c.session.bytes() - c.session.image.ownBytes() + c.recorder.bytes() +
-             c.beams.paths.size() * sizeof(c.beams.paths[0]);
+        b += c.session.bytes() - c.session.image.ownBytes() + c.recorder.bytes();
         for (const auto& row : c.session.image.rows())
             if (rows.insert(row.get()).second) b += row->size() * sizeof(std::int64_t);
     }

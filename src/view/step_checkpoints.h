@@ -13,11 +13,11 @@
 
 namespace rc {
 
-/// One checkpoint: the render, its recorder and its beam-tree builder at one step.
+/// One checkpoint: the render and its recorder at one step (the beam tree is built from
+/// the recorder's events, SessionState::beams()).
 struct StepCheckpoint {
     rc::SessionCheckpoint session;
     TraceRecorder::Mark recorder;
-    rc::BeamTreeBuilder::Mark beams;
     std::int64_t steps() const { return session.steps; }
 };
 

@@ -40,14 +40,17 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
 
 std::vector<int> TraceRecorder::eventsOf(int pixel) const {
     std::vector<int> out;
-    for (int i = lastOfPixel_[pixel]; i >= 0; i = events_[i].previous) out.push_back(i);
+    for (int i = lastOfPixel_[pixel]; i >= 0; i = events_[std::size_t(i)].previous) out.push_back(i);
     std::reverse(out.begin(), out.end());
     return out;
 }
 
 int TraceRecorder::eventAt(int pixel, int node) const {
-    for (int i = lastOfPixel_[pixel]; i >= 0; i = events_[i].previous)
-        if (events_[i].node == node && !events_[i].deferred()) return i;
+    for (int i = lastOfPixel_[pixel]; i >= 0;) {
+        const EventRecord r = events_[std::size_t(i)];
+        if (r.node == node && !r.deferred()) return i;
+        i = r.previous;
+    }
     return -1;
 }
 
@@ -71,17 +74,18 @@ void TraceRecorder::rollback(const Mark& m) {
     if (m.events > events_.size() || m.misses > misses_.size())
         throw std::invalid_argument("TraceRecorder::rollback: a mark of another recorder");
     // Take each event back, newest first: what onEvent() added, it subtracts
-    for (std::size_t i = events_.size(); i-- > m.events;) {
-        const EventRecord& r = events_[i];
+    events_.findBackward(events_.size(), [&](std::size_t i, const EventRecord& r) {
+        if (i < m.events) return true;
         const int p = r.pixel;
         lastOfPixel_[p] = r.previous;
         tests_[p] -= r.tests;
-        if (r.deferred()) continue;
+        if (r.deferred()) return false;
         if (firstVisit_[p] == r.step) firstVisit_[p] = -1;
         if (r.rayDecision() == rc::Decision::Hit) --hits_[p];
         // The first miss goes last: with it goes the pixel's miss reason
         if (r.rayDecision() == rc::Decision::Miss && --missCount_[p] == 0) missReason_[p] = 0;
-    }
+        return false;
+    });
     events_.truncate(m.events);
     misses_.truncate(m.misses);
     last_ = m.last;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "view/block_vector.h"
-#include "view/event_record.h"
+#include "view/event_log.h"
 #include "order/ray_order.h"
 
 namespace rc {
@@ -29,7 +29,7 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
-    const BlockVector<EventRecord>& events() const { return events_; }
+    const EventLog& events() const { return events_; }
     /// Indices into events() of committed misses and of deferrals, in order.
     const BlockVector<std::int32_t>& misses() const { return misses_; }
     /// Bytes the per-event record takes (events and the miss index), to weigh against
@@ -77,7 +77,7 @@ public:
 private:
     int width_, height_;
     const rc::RayOrder* order_;
-    BlockVector<EventRecord> events_;
+    EventLog events_;
     BlockVector<std::int32_t> misses_;
     std::vector<std::int32_t> lastOfPixel_;
     std::vector<std::int32_t> tests_;

@@ -260,16 +260,16 @@ TEST_CASE("Scene view, the paper's Figure 1: along the ray, the cylinder is much
     REQUIRE(v->caption().contains("cylinder of safety"));
 }
 
-TEST_CASE("Recording keeps at most 64 bytes per ray", "[gui][record]") {
+TEST_CASE("Recording keeps at most 32 bytes per ray", "[gui][record]") {
     Window f("cube:3");
     f.goTo(150000);
     const rc::TraceRecorder& rec = f.state().recorder();
     const double events = double(rec.events().size());
     REQUIRE(events > 100000);
     REQUIRE(sizeof(rc::EventRecord) <= 56);
-    // Counted from what is allocated (blocks and their table, and the miss index)
+    // Counted from what is allocated (the log's chunks and group index, and the miss index)
     WARN("recording: " << double(rec.eventBytes()) / events << " bytes per event over " << events << " events");
-    REQUIRE(double(rec.eventBytes()) / events <= 64.0);
+    REQUIRE(double(rec.eventBytes()) / events <= 32.0);
 }
 
 TEST_CASE("A recorded direction stays within 1e-4 radians of the traced one", "[gui][record]") {

@@ -1,0 +1,200 @@
+#include "view/event_log.h"
+
+#include <cstring>
+
+namespace rc {
+
+namespace {
+
+// Unsigned numbers in 7-bit groups, low first, the high bit set on all but the last byte
+void putVarint(std::uint8_t*& p, std::uint64_t v) {
+    while (v >= 0x80) {
+        *p++ = std::uint8_t(v | 0x80);
+        v >>= 7;
+    }
+    *p++ = std::uint8_t(v);
+}
+std::uint64_t getVarint(const std::uint8_t*& p) {
+    std::uint64_t v = 0;
+    for (int shift = 0;; shift += 7) {
+        const std::uint8_t b = *p++;
+        v |= std::uint64_t(b & 0x7f) << shift;
+        if (!(b & 0x80)) return v;
+    }
+}
+// Signed numbers folded onto unsigned ones: 0, -1, 1, -2, ... as 0, 1, 2, 3, ...
+void putSigned(std::uint8_t*& p, std::int64_t v) {
+    putVarint(p, (std::uint64_t(v) << 1) ^ std::uint64_t(v >> 63));
+}
+std::int64_t getSigned(const std::uint8_t*& p) {
+    const std::uint64_t u = getVarint(p);
+    return std::int64_t(u >> 1) ^ -std::int64_t(u & 1);
+}
+template <class T>
+void putRaw(std::uint8_t*& p, const T& v) {
+    std::memcpy(p, &v, sizeof(T));
+    p += sizeof(T);
+}
+template <class T>
+void getRaw(const std::uint8_t*& p, T& v) {
+    std::memcpy(&v, p, sizeof(T));
+    p += sizeof(T);
+}
+
+// The header's two bytes: kind (2 bits), decision (2), reason (3), same origin (1);
+// flags (3), no hit distance (1), region changed (1), step (2: same, one more, coded), raw (1)
+enum : std::uint8_t { kSameOrigin = 0x80, kNoT = 0x08, kRegionChanged = 0x10, kRawHeader = 0x80 };
+enum : std::uint8_t { kStepSame = 0, kStepNext = 1, kStepCoded = 2 };
+constexpr float kNone = -1.0f;
+const EventRecord kStart{};
+
+}  // namespace
+
+void EventLog::push_back(const EventRecord& r) {
+    // [encode]
+    // Against the event before it in its group: the first of a group against nothing
+    const bool first = size_ % kGroup == 0;
+    const EventRecord& b = first ? kStart : last_;
+    const std::int64_t index = std::int64_t(size_);
+    std::uint8_t buf[kMaxEvent];
+    std::uint8_t* p = buf;
+    const bool sameOrigin = std::memcmp(r.o, b.o, sizeof r.o) == 0;
+    const bool noT = std::memcmp(&r.t, &kNone, sizeof r.t) == 0;
+    const std::int64_t step = std::int64_t(r.step) - b.step;
+    const std::uint8_t stepCode = step == 0 ? kStepSame : step == 1 ? kStepNext : kStepCoded;
+    const bool narrow = r.kind < 4 && r.decision < 4 && r.reason < 8 && r.flags < 8;
+    *p++ = narrow ? std::uint8_t(r.kind | r.decision << 2 | r.reason << 4 | (sameOrigin ? kSameOrigin : 0)) : 0;
+    *p++ = std::uint8_t((narrow ? r.flags : 0) | (noT ? kNoT : 0) | (r.region != b.region ? kRegionChanged : 0) |
+                        stepCode << 5 | (narrow ? 0 : kRawHeader));
+    if (!narrow) {
+        for (std::uint8_t v : {r.kind, r.decision, r.reason, r.flags}) *p++ = v;
+        *p++ = sameOrigin ? 1 : 0;
+    }
+    if (stepCode == kStepCoded) putSigned(p, step);
+    putSigned(p, std::int64_t(r.pixel) - b.pixel);
+    putSigned(p, std::int64_t(r.node) - b.node);
+    putSigned(p, r.hit);
+    putSigned(p, r.origin);
+    putSigned(p, r.tests);
+    if (r.region != b.region) putSigned(p, std::int64_t(r.region) - b.region);
+    // The pixel's previous event, as how far back it is: 0 none, 1 coded as it is
+    if (r.previous == -1) putVarint(p, 0);
+    else if (r.previous >= 0 && r.previous < index) putVarint(p, std::uint64_t(index - r.previous + 1));
+    else {
+        putVarint(p, 1);
+        putSigned(p, r.previous);
+    }
+    if (!sameOrigin) putRaw(p, r.o);
+    putRaw(p, r.d);
+    if (!noT) putRaw(p, r.t);
+    // [encode]
+    const std::size_t n = std::size_t(p - buf);
+    if (chunks_.empty() || used_.back() + n > kChunk) {
+        chunks_.emplace_back(new std::uint8_t[kChunk]);  // untouched until written
+        used_.push_back(0);
+    }
+    if (first) groups_.push_back(std::uint64_t(chunks_.size() - 1) * kChunk + used_.back());
+    std::memcpy(chunks_.back().get() + used_.back(), buf, n);
+    used_.back() += std::uint32_t(n);
+    ++size_;
+    last_ = r;
+}
+
+std::uint64_t EventLog::decode(std::uint64_t pos, std::size_t index, const EventRecord& b, EventRecord& r) const {
+    const std::uint8_t* const start = chunks_[pos / kChunk].get() + pos % kChunk;
+    const std::uint8_t* p = start;
+    const std::uint8_t h0 = *p++, h1 = *p++;
+    bool sameOrigin = h0 & kSameOrigin;
+    if (h1 & kRawHeader) {
+        r.kind = *p++;
+        r.decision = *p++;
+        r.reason = *p++;
+        r.flags = *p++;
+        sameOrigin = *p++ != 0;
+    } else {
+        r.kind = h0 & 3;
+        r.decision = (h0 >> 2) & 3;
+        r.reason = (h0 >> 4) & 7;
+        r.flags = h1 & 7;
+    }
+    const std::uint8_t stepCode = (h1 >> 5) & 3;
+    r.step = std::int32_t(b.step + (stepCode == kStepSame ? 0 : stepCode == kStepNext ? 1 : getSigned(p)));
+    r.pixel = std::int32_t(b.pixel + getSigned(p));
+    r.node = std::int32_t(b.node + getSigned(p));
+    r.hit = std::int32_t(getSigned(p));
+    r.origin = std::int32_t(getSigned(p));
+    r.tests = std::int32_t(getSigned(p));
+    r.region = h1 & kRegionChanged ? std::int32_t(b.region + getSigned(p)) : b.region;
+    const std::uint64_t back = getVarint(p);
+    r.previous = back == 0 ? -1 : back == 1 ? std::int32_t(getSigned(p)) : std::int32_t(std::int64_t(index) - std::int64_t(back) + 1);
+    if (sameOrigin) std::memcpy(r.o, b.o, sizeof r.o);
+    else getRaw(p, r.o);
+    getRaw(p, r.d);
+    if (h1 & kNoT) r.t = kNone;
+    else getRaw(p, r.t);
+    return pos + std::uint64_t(p - start);
+}
+
+std::uint64_t EventLog::skipEnd(std::uint64_t pos) const {
+    const std::size_t chunk = pos / kChunk;
+    return chunk < used_.size() && pos % kChunk >= used_[chunk] ? std::uint64_t(chunk + 1) * kChunk : pos;
+}
+
+std::size_t EventLog::decodeGroup(std::size_t g, EventRecord* out) const {
+    const std::size_t n = std::min(kGroup, size_ - g * kGroup);
+    std::uint64_t pos = groups_[g];
+    for (std::size_t k = 0; k < n; ++k) pos = decode(skipEnd(pos), g * kGroup + k, k == 0 ? kStart : out[k - 1], out[k]);
+    return n;
+}
+
+EventRecord EventLog::operator[](std::size_t i) const { return *from(i); }
+
+void EventLog::truncate(std::size_t n) {
+    if (n >= size_) return;
+    // Where event n starts, and the event before it (what the next one is coded against)
+    std::uint64_t pos = groups_[n / kGroup];
+    EventRecord before;
+    for (std::size_t i = n / kGroup * kGroup; i < n; ++i) {
+        EventRecord r;
+        pos = skipEnd(decode(skipEnd(pos), i, before, r));
+        before = r;
+    }
+    last_ = n % kGroup != 0 ? before : n > 0 ? (*this)[n - 1] : EventRecord{};
+    const std::size_t chunk = pos / kChunk;
+    if (n == 0) {
+        chunks_.clear();
+        used_.clear();
+    } else if (chunk < chunks_.size()) {
+        chunks_.resize(chunk + 1);
+        used_.resize(chunk + 1);
+        used_[chunk] = std::uint32_t(pos % kChunk);
+    }
+    groups_.truncate((n + kGroup - 1) / kGroup);
+    size_ = n;
+}
+
+std::size_t EventLog::bytes() const {
+    return chunks_.size() * kChunk + chunks_.capacity() * sizeof(chunks_[0]) + used_.capacity() * sizeof(used_[0]) +
+           groups_.bytes();
+}
+
+EventLog::const_iterator::const_iterator(const EventLog* log, std::size_t i) : log_(log), i_(i) {
+    if (i_ >= log_->size_) return;
+    // From the start of its group
+    const std::size_t first = i_ / kGroup * kGroup;
+    pos_ = log_->groups_[i_ / kGroup];
+    EventRecord before;
+    for (std::size_t k = first; k <= i_; ++k) {
+        pos_ = log_->decode(log_->skipEnd(pos_), k, before, current_);
+        before = current_;
+    }
+}
+
+EventLog::const_iterator& EventLog::const_iterator::operator++() {
+    if (++i_ >= log_->size_) return *this;
+    const EventRecord before = i_ % kGroup == 0 ? kStart : current_;
+    pos_ = log_->decode(log_->skipEnd(pos_), i_, before, current_);
+    return *this;
+}
+
+}  // namespace rc
