@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "search/segment_clearance.h"
+
 namespace rc {
 
 namespace {

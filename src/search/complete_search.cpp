@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "search/segment_clearance.h"
 
 namespace rc {
 

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "search/query.h"
-#include "search/segment_clearance.h"
 #include "search/sphere_cull.h"
 
 namespace rc {

@@ -5,6 +5,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "search/segment_clearance.h"
+
 namespace rc {
 
 CylinderOfSafety::CylinderOfSafety(const Scene& scene, const CompleteSearch& search)
