@@ -221,7 +221,9 @@ bool endsWithNff(const std::string& s) {
 const Registry<BuiltinInfo>& builtinScenes() {
     static const Registry<BuiltinInfo> r = [] {
         Registry<BuiltinInfo> b;
-        b.add({"cube:N", "N^3 jittered reflective spheres on a lattice (1 <= N <= 64), after the paper's Table 1 scene",
+        b.add({"cube:N",
+               "N^3 jittered reflective spheres on a lattice (1 <= N <= " + std::to_string(kMaxCube) +
+                   "), after the paper's Table 1 scene",
                {2, 3, 4, 5, 6, 8}, kMaxCube, "", [](int n, std::uint64_t seed) { return makeCube(n, seed); }});
         b.add({"balls:N",
                "SPD's sphereflake of size N (1 <= N <= " + std::to_string(kMaxSphereflake) +
