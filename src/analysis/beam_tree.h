@@ -34,7 +34,8 @@ class BeamTreeBuilder final : public TraceSink {
 public:
     BeamTreeBuilder(int width, int height) : width_(width), height_(height) {}
     void onEvent(const TraceEvent& e) override;
-    /// Records one ray directly (for hand-made images in tests).
+    /// Records one ray directly: from a viewer's recorded events (SessionState::beams), or a
+    /// hand-made image in tests.
     void record(int path, int pixel, int originObject, bool inside, int hitObject);
     BeamTreeStats build() const;
     /// Takes over the rays another builder of the same size recorded (other pixels), which

@@ -159,7 +159,8 @@ void EventLog::truncate(std::size_t n) {
         pos = skipEnd(decode(skipEnd(pos), i, before, r));
         before = r;
     }
-    last_ = n % kGroup != 0 ? before : n > 0 ? (*this)[n - 1] : EventRecord{};
+    // The first event of a group is coded against nothing, so `before` is all that is needed
+    last_ = before;
     const std::size_t chunk = pos / kChunk;
     if (n == 0) {
         chunks_.clear();

@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// \brief The recorder's log of every traced ray, kept as a byte stream of about 22 bytes an
-/// event instead of a 56-byte rc::EventRecord each: a render of a million pixels hears
-/// millions of events, and the page (a browser tab) and the Qt GUI keep them all.
-#include <cstddef>
+/// \brief The recorder's log of every traced ray, kept as a byte stream rather than an
+/// rc::EventRecord each: a render of a million pixels hears millions of events, and the
+/// page (a browser tab) and the Qt GUI keep them all.
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -87,7 +87,7 @@ private:
     std::vector<std::uint32_t> used_;  ///< bytes used in each chunk
     BlockVector<std::uint64_t, 4096> groups_;  ///< where each group starts (chunk * kChunk + offset)
     std::size_t size_ = 0;
-    EventRecord last_;  ///< the last event appended: the next one is coded against it
+    EventRecord last_;  ///< what the next event is coded against: the last one appended, unless it starts a group
 };
 
 }  // namespace rc

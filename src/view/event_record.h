@@ -7,9 +7,9 @@
 
 namespace rc {
 
-/// One traced (or deferred) ray, as the GUI keeps it: 56 bytes instead of the full
-/// event, and about 24 once coded in the recorder's rc::EventLog, so a whole render
-/// (millions of events) fits in memory. The direction is kept
+/// One traced (or deferred) ray, as the GUI keeps it: much less than the full event, and
+/// less again once coded in the recorder's rc::EventLog, so a whole render (millions of
+/// events) fits in memory. The direction is kept
 /// as two 16-bit octahedral coordinates (within about 1e-4 radians), and a shadow ray's
 /// length is not kept: it is the distance from its origin to its light.
 struct EventRecord {
