@@ -63,10 +63,12 @@ TEST_CASE("The key names an overlay only when one of its shapes is drawn", "[vie
     rc::ImageProjector proj(s.scene().camera, s.camera());
     proj.setClip({0, 0, 64, 64});
     const rc::LegendShown all{true, true, true, true};
-    int checked = 0;
-    for (int i = 0; i < int(s.recorder().events().size()) && checked < 5; ++i) {
+    int checked = 0, shadows = 0;
+    for (int i = 0; i < int(s.recorder().events().size()) && (checked < 5 || shadows == 0); ++i) {
         const auto f = rc::RayFocus::ofEvent(s, i);
-        if (!f || f->hit < 0 || f->deferred) continue;
+        // Rays that hit, and shadow rays (whose hull ends at their light)
+        if (!f || (f->hit < 0 && f->kind != rc::RayKind::Shadow) || f->deferred) continue;
+        if (checked >= 5 && f->kind != rc::RayKind::Shadow) continue;
         const rc::FocusHull h = rc::hullOf(s, *f);
         if (!h.valid() || h.blockers.empty()) continue;
         rc::Selection sel;
@@ -74,20 +76,22 @@ TEST_CASE("The key names an overlay only when one of its shapes is drawn", "[vie
         const auto shapes = rc::focusShapes(s, *f, proj, {true, true});
         const auto keys = rc::legendEntries(s, sel, all, shapes);
         CHECK(hasText(keys, "blocker hull of origin and target"));
-        CHECK(hasText(keys, "target (cached object)"));
+        CHECK(hasText(keys, f->kind == rc::RayKind::Shadow ? "target (the light)" : "target (cached object)"));
         CHECK(hasText(keys, "potential blockers"));
         CHECK(hasText(keys, "misses marked at path "));
         // The same focus with nothing drawn (every shape clipped away): no shape's entry
         const auto bare = rc::legendEntries(s, sel, all, {});
         CHECK_FALSE(hasText(bare, "blocker hull of origin and target"));
-        CHECK_FALSE(hasText(bare, "target (cached object)"));
+        CHECK_FALSE(hasText(bare, "target ("));
         CHECK_FALSE(hasText(bare, "potential blockers"));
         CHECK_FALSE(hasText(bare, "selected ray"));
         CHECK_FALSE(hasText(bare, "cylinder of safety"));
         CHECK(hasText(bare, "misses marked at path "));  // the markers are not focus shapes
         ++checked;
+        shadows += f->kind == rc::RayKind::Shadow;
     }
     REQUIRE(checked > 0);
+    REQUIRE(shadows > 0);  // a shadow ray's target is its light, and the key says so
     // A selected pixel is named, in the selection's colour
     rc::Selection sel;
     sel.pixel = 3 * 64 + 5;

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "scene/builtin_scenes.h"
+#include "view/compare_caption.h"
 #include "view/miss_cause.h"
 #include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
@@ -188,4 +190,24 @@ TEST_CASE("A ray chosen by pixel and path, the caption of the ray in focus, and 
     REQUIRE(lines[1].rfind("selected: pixel (" + std::to_string(r.pixel % 64) + "," + std::to_string(r.pixel / 64) +
                                ")  " + path + "  hit #" + std::to_string(r.hit),
                            0) == 0);
+}
+
+TEST_CASE("The compare caption gives the right render's tests and misses against the left's", "[view]") {
+    rc::SessionState scan = session("cube:3", rc::CacheKind::Blocker, 48);
+    rc::SessionState bfs = session("cube:3", rc::CacheKind::Blocker, 48, rc::OrderKind::BreadthFirst);
+    REQUIRE(scan.runUntil(rc::RunGoal::ToEnd, 0));
+    REQUIRE(bfs.runUntil(rc::RunGoal::ToEnd, 0));
+    const auto& a = scan.session().counters();
+    const auto& b = bfs.session().counters();
+    REQUIRE(a.misses > 0);
+    REQUIRE(b.misses != a.misses);
+    const std::vector<std::string> lines = rc::compareCaption(scan, bfs);
+    char want[160];
+    std::snprintf(want, sizeof want, "misses %llu = %.2fx the left's %llu", (unsigned long long)b.misses,
+                  double(b.misses) / double(a.misses), (unsigned long long)a.misses);
+    INFO(want);
+    REQUIRE(std::find(lines.begin(), lines.end(), std::string(want)) != lines.end());
+    REQUIRE(lines.front().rfind("tests " + std::to_string(b.intersectionTests) + " = ", 0) == 0);
+    // In step: nothing to catch up
+    REQUIRE(lines.size() == 3);
 }

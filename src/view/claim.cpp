@@ -26,7 +26,8 @@ const std::vector<ClaimQuantity>& claimQuantities() {
         {"reflections", "reflection rays in the ray tree of the pixel in focus", "panel:ray-tree"},
         {"flushed_entries", "entries of the cache tree marked flushed", "panel:cache-tree"},
         {"cache_paths", "paths (entries) of the cache tree", "panel:cache-tree"},
-        {"total_tests", "ray-object tests of the whole render (what the tests heatmap sums)", "heatmap:tests"},
+        {"total_tests", "ray-object tests of the whole render (what the tests heatmap sums; the compare caption's tests)",
+         "heatmap:tests", true},
         {"beams", "the size of the beam tree of the render (its beams)", "panel:statistics"},
         {"coherence", "the paper's coherence: average ray-tree size / beam-tree size", "panel:statistics"},
         {"inside", "1 when the ray in focus leaves its object into its interior, else 0", ""},
@@ -34,7 +35,8 @@ const std::vector<ClaimQuantity>& claimQuantities() {
         {"queued", "pixels the Frontier overlay marks as waiting in the fill queue", "frontier"},
         {"traced_pixels", "pixels whose eye ray has been traced (drawn in the picture)", ""},
         {"pixels", "pixels of the picture", ""},
-        {"all_misses", "committed cache misses of the render (the Statistics panel's misses)", "panel:statistics"},
+        {"all_misses", "committed cache misses of the render (the Statistics panel's misses; the compare caption's)",
+         "panel:statistics", true},
         {"misses_cold", "the render's misses of reason cold (Statistics: miss reasons)", "panel:statistics"},
         {"misses_flushed", "... of reason flushed", "panel:statistics"},
         {"misses_origin_changed", "... of reason origin_changed", "panel:statistics"},
@@ -163,8 +165,9 @@ std::string claimNotDrawn(const Claim& claim, bool compared, const std::vector<s
     for (const Claim::Side* side : {&claim.lhs, &claim.rhs}) {
         if (side->quantity.empty()) continue;
         if (side->pane == "right" && !compared) return "'" + claim.text + "' reads the right pane of a stop without 'compare'";
-        const std::string drawn = findQuantity(side->quantity)->drawnBy;
-        if (drawn.empty()) continue;
+        const ClaimQuantity& q = *findQuantity(side->quantity);
+        const std::string drawn = q.drawnBy;
+        if (drawn.empty() || (compared && q.compareCaption)) continue;
         const auto has = [](const std::vector<std::string>& list, const std::string& w) {
             return std::find(list.begin(), list.end(), w) != list.end();
         };

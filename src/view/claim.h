@@ -41,6 +41,9 @@ struct ClaimQuantity {
     /// panel (`panel:statistics`), a heatmap (`heatmap:tests`), or "" (the caption under
     /// each picture, which is always drawn).
     const char* drawnBy;
+    /// Also on screen in a compared stop: the compare caption (rc::compareCaption) gives
+    /// it for both panes.
+    bool compareCaption = false;
 };
 /// Every quantity a claim may name, with what it reads and what draws it.
 const std::vector<ClaimQuantity>& claimQuantities();

@@ -13,6 +13,11 @@ std::vector<std::string> compareCaption(const SessionState& left, const SessionS
     out.push_back(line);
     std::snprintf(line, sizeof line, "difference %s%.0f tests", b >= a ? "+" : "", b - a);
     out.push_back(line);
+    // Its cache misses, of every path, against the left's
+    const double m = double(left.session().counters().misses);
+    const double n = double(right.session().counters().misses);
+    std::snprintf(line, sizeof line, "misses %.0f = %.2fx the left's %.0f", n, m > 0 ? n / m : 0.0, m);
+    out.push_back(line);
     if (left.session().steps() != right.session().steps()) {
         std::snprintf(line, sizeof line, "catching up: step %lld of %lld", (long long)right.session().steps(),
                       (long long)left.session().steps());

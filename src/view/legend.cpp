@@ -59,7 +59,8 @@ std::vector<LegendEntry> legendEntries(const SessionState& s, const Selection& s
             if (anyOf(drawn, {ShapeRole::Hull, ShapeRole::EmptyCone, ShapeRole::EmptyConeAxis}))
                 keys.push_back({kHull, "blocker hull of origin and target (dashed: empty cone of eye rays)"});
             if (anyOf(drawn, {ShapeRole::Target, ShapeRole::TargetPoint}))
-                keys.push_back({kTarget, "target (cached object)"});
+                keys.push_back({kTarget, focus && focus->kind == RayKind::Shadow ? "target (the light)"
+                                                                                  : "target (cached object)"});
             if (anyOf(drawn, {ShapeRole::Blocker, ShapeRole::BlockerHit})) {
                 // A long list is drawn in part: say how much
                 const FocusHull h = focus ? hullOf(s, *focus) : FocusHull{};
