@@ -27,6 +27,22 @@ namespace {
 
 using palette::withAlpha;
 
+// What the side view calls an object: its shape
+const char* shapeName(rc::Shape s) {
+    switch (s) {
+        case rc::Shape::Sphere: return "sphere";
+        case rc::Shape::Polygon: return "polygon";
+        case rc::Shape::Cone: return "cone";
+    }
+    return "object";
+}
+
+// The sphere a cylinder's radius is measured against: the sphere itself, or the bounding
+// sphere of a polygon or cone
+QString boundName(rc::Shape s) {
+    return s == rc::Shape::Sphere ? QString("sphere") : QString("bounding sphere of the %1").arg(shapeName(s));
+}
+
 QPen pen(const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine) {
     QPen p(c, width, style, Qt::RoundCap, Qt::RoundJoin);
     p.setCosmetic(true);
@@ -581,8 +597,9 @@ QStringList SceneView::captionLines(bool fan) const {
         QString c;
         const int hit = k.focus->hit;
         if (hit >= 0 && hit < int(k.bodies.size()))
-            c = QString("%1% of the radius of the sphere hit, #%2 (%3)")
-                    .arg(num(100.0 * cyl.radius / k.bodies[std::size_t(hit)].bound.r)).arg(hit)
+            c = QString("%1% of the radius of the %2 hit, #%3 (%4)")
+                    .arg(num(100.0 * cyl.radius / k.bodies[std::size_t(hit)].bound.r))
+                    .arg(boundName(k.bodies[std::size_t(hit)].shape)).arg(hit)
                     .arg(num(k.bodies[std::size_t(hit)].bound.r));
         if (k.limiter >= 0) c += QString("%1#%2 sets it").arg(c.isEmpty() ? "" : "; ").arg(k.limiter);
         if (!c.isEmpty()) cap << c;
@@ -608,9 +625,10 @@ void SceneView::paintLabels(QPainter& p, double lw) {
     if (k.focus && cylinderShown_) {
         const int hit = k.focus->hit;
         if (hit >= 0 && hit < int(k.bodies.size())) {
-            const rc::Sphere& b = k.bodies[std::size_t(hit)].bound;
-            label(toWidget(b.c) + QPointF(b.r * scale_ * 0.6, -b.r * scale_ * 0.6), QString("sphere hit #%1").arg(hit),
-                  palette::kTarget);
+            const SceneSketch::Body& body = k.bodies[std::size_t(hit)];
+            const rc::Sphere& b = body.bound;
+            label(toWidget(b.c) + QPointF(b.r * scale_ * 0.6, -b.r * scale_ * 0.6),
+                  QString("%1 hit #%2").arg(shapeName(body.shape)).arg(hit), palette::kTarget);
         }
         if (cyl.radius > 0.0)
             label(toWidget(cyl.a) + QPointF(cyl.radius * scale_, cyl.radius * scale_ * 0.5), "cylinder of safety",
