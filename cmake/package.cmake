@@ -25,6 +25,17 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
 set(CPACK_PACKAGE_CONTACT "RayCache developers <raycache@localhost>")
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)  # Qt, Embree, libcrypto, libstdc++: found by dpkg-shlibdeps
+# Depends (Qt, Embree, libcrypto, libstdc++) are found by dpkg-shlibdeps on the executables
+# alone, at packaging time (package_depends.cmake): CPack's own SHLIBDEPS runs `file` on every
+# installed file to find them, thousands of processes for the docs site
+set(_raycache_binaries "")
+foreach(_target raycache raycache-gui)
+  if(TARGET ${_target})
+    string(APPEND _raycache_binaries "$<TARGET_FILE:${_target}>\n")
+  endif()
+endforeach()
+file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/package_binaries.txt CONTENT "${_raycache_binaries}")
+set(CPACK_RAYCACHE_BINARIES_FILE ${CMAKE_BINARY_DIR}/package_binaries.txt)
+set(CPACK_PROJECT_CONFIG_FILE ${CMAKE_SOURCE_DIR}/cmake/package_depends.cmake)
 set(CPACK_GENERATOR DEB)
 include(CPack)

@@ -11,6 +11,10 @@ trap 'rm -rf "$scratch"' EXIT
 deb=$(ls "$scratch"/out/*.deb)
 echo "package: $(basename "$deb"), $(du -k "$deb" | cut -f1) KiB"
 dpkg-deb --info "$deb" | grep -E "^ (Package|Version|Depends):"
+# Depends names the libraries the executables link (dpkg-shlibdeps, cmake/package_depends.cmake)
+depends=$(dpkg-deb -f "$deb" Depends)
+[[ $depends == *libc6* && $depends == *libstdc++6* ]] || { echo "Depends lacks libc6 or libstdc++6: '$depends'"; exit 1; }
+[[ ! -x $build/ui/raycache-gui || $depends == *libqt6widgets6* ]] || { echo "Depends lacks Qt: '$depends'"; exit 1; }
 dpkg -x "$deb" "$scratch/root"
 installed="$scratch/root/usr/bin/raycache"
 [[ -x $installed ]] || { echo "no usr/bin/raycache in the package"; exit 1; }
