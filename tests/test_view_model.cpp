@@ -14,6 +14,8 @@
 #include "view/overlay_layers.h"
 #include "view/overlay_shapes.h"
 #include "view/path_index.h"
+#include "view/event_text.h"
+#include "view/ray_tree_rows.h"
 #include "view/session_state.h"
 
 namespace {
@@ -210,4 +212,46 @@ TEST_CASE("The compare caption gives the right render's tests and misses against
     REQUIRE(lines.front().rfind("tests " + std::to_string(b.intersectionTests) + " = ", 0) == 0);
     // In step: nothing to catch up
     REQUIRE(lines.size() == 3);
+}
+
+TEST_CASE("A pixel's ray tree: every ray it traced, each under the ray that spawned it", "[view]") {
+    rc::SessionState s = session("cube:3", rc::CacheKind::Blocker, 48, rc::OrderKind::BreadthFirst);
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    const rc::CacheTree& paths = s.session().cacheTree();
+    int deepest = 0, deferred = 0, misses = 0;
+    for (int px = 0; px < 48 * 48; ++px) {
+        const std::vector<rc::RayTreeRow> rows = rc::rayTreeRows(s, px);
+        REQUIRE(rows.size() == s.recorder().eventsOf(px).size());
+        REQUIRE_FALSE(rows.empty());
+        CHECK(rows.front().path == "eye");
+        CHECK(rows.front().parent == -1);
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            const rc::RayTreeRow& r = rows[k];
+            const rc::EventRecord e = s.recorder().events()[std::size_t(r.event)];
+            INFO("pixel " << px << " row " << k << " " << r.path);
+            CHECK(r.path == paths.label(e.node));
+            CHECK(r.tests == e.tests);
+            CHECK(r.deferred == e.deferred());
+            CHECK(r.hit == (r.deferred ? std::string("?") : rc::objectLabel(s.scene(), e.hit)));
+            if (r.parent >= 0) {
+                // Its parent came before it, is the committed ray of the path one step up
+                REQUIRE(std::size_t(r.parent) < k);
+                const rc::RayTreeRow& p = rows[std::size_t(r.parent)];
+                CHECK_FALSE(p.deferred);
+                CHECK(r.path.rfind(p.path + "/", 0) == 0);
+                CHECK(r.depth == p.depth + 1);
+            } else {
+                CHECK(r.depth == 0);
+            }
+            deepest = std::max(deepest, r.depth);
+            deferred += r.deferred;
+            misses += r.miss;
+        }
+    }
+    CHECK(deepest >= 2);   // cube:3 reflects: eye, reflection, its shadow rays
+    CHECK(deferred > 0);   // breadth-first order defers some misses
+    CHECK(misses > 0);
+    CHECK(rc::rayTreeRows(s, -1).empty());
+    CHECK(rc::objectLabel(s.scene(), -1) == "nothing");
+    CHECK(rc::objectLabel(s.scene(), 0) == "#0 sphere");
 }

@@ -9,9 +9,9 @@
 namespace rcgui {
 
 QString text(std::string_view s);
-/// "#12 sphere" or "nothing".
+/// "#12 sphere" or "nothing" (rc::objectLabel).
 QString objectLabel(const rc::Scene& scene, int object);
-/// "hit", "miss: blocker_hit", "deferred: target_missed", "search".
+/// "hit", "miss: blocker_hit", "deferred, miss: target_missed" (rc::decisionText).
 QString decisionText(const rc::EventRecord& r);
 
 }  // namespace rcgui

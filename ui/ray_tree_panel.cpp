@@ -1,11 +1,11 @@
 #include "ray_tree_panel.h"
 
-#include <map>
-
 #include <QHeaderView>
 #include <QTreeWidgetItemIterator>
 
 #include "labels.h"
+#include "palette.h"
+#include "view/ray_tree_rows.h"
 
 namespace rcgui {
 
@@ -23,23 +23,20 @@ void RayTreePanel::showPixel(const rc::SessionState* state, int pixel) {
     clear();
     pixel_ = pixel;
     if (!state || pixel < 0) return;
-    const rc::CacheTree& paths = state->session().cacheTree();
-    std::map<int, QTreeWidgetItem*> byNode;  // committed ray of each path
-    for (int i : state->recorder().eventsOf(pixel)) {
-        const rc::EventRecord& r = state->recorder().events()[i];
-        const int parentNode = paths.node(r.node).parent;
-        auto parentIt = byNode.find(parentNode);
-        auto* item = parentIt != byNode.end() ? new QTreeWidgetItem(parentIt->second) : new QTreeWidgetItem(this);
-        item->setText(0, QString::fromStdString(paths.label(r.node)));
-        item->setText(1, text(rc::toString(r.rayKind())));
-        item->setText(2, r.deferred() ? QString("?") : objectLabel(state->scene(), r.hit));
-        item->setText(3, decisionText(r));
+    // The core's rows (rc::rayTreeRows), as the page's
+    std::vector<QTreeWidgetItem*> items;
+    for (const rc::RayTreeRow& r : rc::rayTreeRows(*state, pixel)) {
+        auto* item = r.parent >= 0 ? new QTreeWidgetItem(items[std::size_t(r.parent)]) : new QTreeWidgetItem(this);
+        item->setText(0, text(r.path));
+        item->setText(1, text(r.kind));
+        item->setText(2, text(r.hit));
+        item->setText(3, text(r.decision));
         item->setText(4, QString::number(r.tests));
         item->setText(5, QString::number(r.step));
-        item->setData(0, Qt::UserRole, i);
-        if (r.deferred()) item->setForeground(3, QColor(200, 40, 60));
-        else if (r.rayDecision() == rc::Decision::Miss) item->setForeground(3, QColor(220, 100, 0));
-        if (!r.deferred()) byNode[r.node] = item;
+        item->setData(0, Qt::UserRole, r.event);
+        if (r.deferred) item->setForeground(3, palette::qt(rc::colours::kDeferredText));
+        else if (r.miss) item->setForeground(3, palette::qt(rc::colours::kMissText));
+        items.push_back(item);
     }
     expandAll();
 }

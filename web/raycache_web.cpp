@@ -28,6 +28,7 @@
 #include "view/compare_caption.h"
 #include "view/legend.h"
 #include "view/palette.h"
+#include "view/ray_tree_rows.h"
 #include "view/registry_listing.h"
 #include "view/scene_list.h"
 #include "view/tour.h"
@@ -119,7 +120,8 @@ std::string palette() {
                                        {"target", rgb(kTarget)}, {"blocker", rgb(kBlocker)}, {"queued", rgb(kQueued)},
                                        {"deferred", rgb(kDeferred)}, {"region", rgb(kRegion)},
                                        {"regionEdge", rgb(kRegionEdge)}, {"selection", rgb(kSelection)},
-                                       {"missCause", rgb(kMissCause)}}}}
+                                       {"missCause", rgb(kMissCause)}, {"missText", rgb(kMissText)},
+                                       {"deferredText", rgb(kDeferredText)}}}}
         .dump();
 }
 
@@ -383,6 +385,19 @@ public:
         return out;
     }
 
+    /// The ray tree of the pixel in focus (rc::rayTreeRows), as JSON: {pixel: [x, y] or null,
+    /// rows: [{depth, path, hit, decision, tests, deferred, miss, focus}]} (focus: the ray in focus).
+    std::string rayTree() const {
+        const auto f = RayFocus::of(*state_, selection_);
+        nlohmann::json rows = nlohmann::json::array();
+        if (!f) return nlohmann::json{{"pixel", nullptr}, {"rows", rows}}.dump();
+        for (const RayTreeRow& r : rayTreeRows(*state_, f->pixel))
+            rows.push_back({{"depth", r.depth}, {"path", r.path}, {"hit", r.hit},
+                            {"decision", r.decision}, {"tests", r.tests}, {"deferred", r.deferred}, {"miss", r.miss},
+                            {"focus", r.event == f->event}});
+        return nlohmann::json{{"pixel", {f->pixel % width(), f->pixel / width()}}, {"rows", rows}}.dump();
+    }
+
     /// The key (rc::legendEntries, then rc::focusEntries), for the overlays shown and the
     /// shapes the last shapes() gave (none when neither cylinder nor hull is on), as JSON:
     /// [{colour: [r, g, b] or null, text}].
@@ -523,6 +538,7 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("legend", &WebRender::legend)
         .function("keys", &WebRender::keys)
         .function("compareCaption", &WebRender::compareCaption)
+        .function("rayTree", &WebRender::rayTree)
         .function("statistics", &WebRender::statistics)
         .function("caption", &WebRender::caption)
         .function("warnings", &WebRender::warnings)

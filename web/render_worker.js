@@ -37,7 +37,7 @@ function workerPicture(w, r, buffers, top) {
     width, height, layer, image, heatTop: top, shapes,
     frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
     keys: JSON.parse(r.keys(view.cylinder, view.hull, view.frontier, view.misses)),
-    statistics: JSON.parse(r.statistics()), caption: r.caption(),
+    statistics: JSON.parse(r.statistics()), caption: r.caption(), rayTree: JSON.parse(r.rayTree()),
     focusPixel: r.focusPixel(), selectedPixel: r.selectedPixel(), done: r.done(),
   };
 }

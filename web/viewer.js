@@ -24,11 +24,12 @@ if (params.get('embed') === '1') document.body.classList.add('embed');
 // The colours, role styles and heatmap ramp are the core's (view/palette.h, which the Qt
 // GUI draws with too), sent by the worker when the web edition has loaded (usePalette); the
 // picture's own colours (heatmap, regions, misses) the core sets in it
-let kRay, kQueued, kDeferred, kSelection;
+let kRay, kQueued, kDeferred, kSelection, kMissText, kDeferredText;
 let kRoleStyles = {}, kRamp = [[0, 0, 0]];
 function usePalette(p) {
   const c = p.colours;
   [kRay, kQueued, kDeferred, kSelection] = [c.ray, c.queued, c.deferred, c.selection];
+  [kMissText, kDeferredText] = [c.missText, c.deferredText];
   kRoleStyles = p.roles;
   kRamp = p.ramp;
 }
@@ -129,6 +130,7 @@ function onMessage(m) {
     $('caption').textContent = captionOf(m);
     canvas.classList.toggle('wide', !!m.compare);
     showKey(m);
+    showRayTree(m.rayTree);
     $('play').textContent = m.running === 'play' ? 'Pause' : 'Play';
     if (m.notes && m.notes.length) $('stop').hidden = false;
     if (m.notes && m.notes.length) $('stop-notes').textContent = [stopNotes].concat(m.notes).filter(Boolean).join(' ');
@@ -434,6 +436,40 @@ function showKey(m) {
     }
     li.appendChild(document.createTextNode(text));
     $('key').appendChild(li);
+  }
+}
+
+// The ray tree of the pixel in focus: the core's rows (rc::rayTreeRows), as the Qt GUI's
+// Ray tree panel, each ray under the one that spawned it
+function showRayTree(tree) {
+  const table = $('ray-tree');
+  table.innerHTML = '';
+  if (!tree || !tree.pixel) {
+    $('ray-tree-title').textContent = 'Click a pixel to list its rays.';
+    return;
+  }
+  $('ray-tree-title').textContent = 'Every ray of pixel (' + tree.pixel.join(', ') + '), under the ray that spawned it';
+  const head = table.insertRow();
+  for (const h of ['ray', 'hit', 'decision', 'tests']) {
+    const th = document.createElement('th');
+    th.textContent = h;
+    head.appendChild(th);
+  }
+  for (const r of tree.rows) {
+    const row = table.insertRow();
+    // The path's last step (which names its kind), indented under its parent, the whole
+    // path as its tooltip
+    const cells = [r.path.split('/').pop(), r.hit, r.decision, r.tests].map((text) => {
+      const td = row.insertCell();
+      td.textContent = text;
+      return td;
+    });
+    cells[0].style.paddingLeft = r.depth + 'em';
+    cells[0].title = r.path;
+    if (r.focus) row.className = 'focus';
+    cells[2].className = 'decision';
+    cells[3].className = 'tests';
+    if (r.deferred || r.miss) cells[2].style.color = rgba(r.deferred ? kDeferredText : kMissText);
   }
 }
 

@@ -37,6 +37,8 @@ inline constexpr Rgb kSampleMissed{140, 150, 255}; ///< samples that hit nothing
 inline constexpr Rgb kShadowLit{255, 250, 190};    ///< shadow samples that reach the light
 inline constexpr Rgb kShadowBlocked{255, 40, 130}; ///< shadow samples an object stops
 inline constexpr Rgb kNoLookups{110, 110, 110};    ///< heatmaps: a pixel with no cache lookups
+inline constexpr Rgb kMissText{200, 90, 0};        ///< the ray tree's rows, on a light background: a miss
+inline constexpr Rgb kDeferredText{200, 40, 60};   ///< ... a deferred attempt
 /// Opacity (of 255) of the region being filled over the picture: a tint it shows through
 inline constexpr std::uint8_t kRegionOpacity = 120;
 /// Opacity (of 255) of finished regions' edges: nearly solid, so that the regions read

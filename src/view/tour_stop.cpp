@@ -48,7 +48,14 @@ std::vector<std::string> qtOnlyOf(const TourStop& st, const StopPlan& plan) {
         return std::any_of(st.settings.begin(), st.settings.end(), [key](const TourSetting& s) { return s.key == key; });
     };
     if (set("scene-view")) out.push_back("the scene view (" + st.value("scene-view", "side") + ")");
-    if (set("panels")) out.push_back("the panels (" + st.value("panels") + ")");
+    if (set("panels")) {
+        // The page shows the ray tree too (rc::rayTreeRows), not the other panels
+        std::string panels;
+        std::stringstream list(st.value("panels"));
+        for (std::string p; std::getline(list, p, ',');)
+            if (p != "ray-tree") panels += (panels.empty() ? "" : ",") + p;
+        if (!panels.empty()) out.push_back("the panels (" + panels + ")");
+    }
     if (!plan.heatmap.empty() && plan.heatmap != "tests") out.push_back("the " + plan.heatmap + " heatmap");
     for (const char* key : {"spp", "light-radius", "shadow-samples", "gloss", "gloss-samples", "orbit", "seed"})
         if (set(key)) out.push_back(std::string("--") + key);

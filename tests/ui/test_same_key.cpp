@@ -12,12 +12,14 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QTreeWidgetItemIterator>
 
 #include <nlohmann/json.hpp>
 
 #include "gui_options.h"
 #include "main_window.h"
 #include "overlay_painter.h"
+#include "ray_tree_panel.h"
 #include "view/tour.h"
 #include "window_fixture.h"
 
@@ -35,7 +37,7 @@ bool hasKey(const std::vector<rc::LegendEntry>& keys, const std::string& prefix)
 
 TEST_CASE("At every tour stop the window's key names the shapes it drew", "[gui][tour][same-key]") {
     nlohmann::json out = nlohmann::json::array();
-    int withShapes = 0;
+    int withShapes = 0, withTree = 0;
     for (const char* name : {"hanrahan86", "debugging"}) {
         const rc::Tour tour = rc::loadTour(QDir(toursFolder()).filePath(QString(name) + ".json").toStdString());
         const std::vector<GuiOptions> stops = rcgui::testing::stopOptionsOf(tour);
@@ -60,10 +62,25 @@ TEST_CASE("At every tour stop the window's key names the shapes it drew", "[gui]
             withShapes += !roles.empty();
             nlohmann::json texts = nlohmann::json::array();
             for (const rc::LegendEntry& e : keys) texts.push_back(e.text);
-            out.push_back({{"tour", name}, {"stop", k}, {"roles", roles}, {"keys", texts}});
+            nlohmann::json stop = {{"tour", name}, {"stop", k}, {"roles", roles}, {"keys", texts}};
+            // The Ray tree panel's rows, where the stop shows it: path, hit, decision, tests (the
+            // page leaves out the kind, which the path's last step names)
+            if (const RayTreePanel* tree = w.rayTreePanel(); tree->isVisibleTo(&w)) {
+                nlohmann::json rows = nlohmann::json::array();
+                for (QTreeWidgetItemIterator it(const_cast<RayTreePanel*>(tree)); *it; ++it) {
+                    nlohmann::json row = nlohmann::json::array();
+                    for (int c : {0, 2, 3, 4}) row.push_back((*it)->text(c).toStdString());
+                    rows.push_back(row);
+                }
+                CHECK(rows.size() > 1);
+                stop["rayTree"] = rows;
+                ++withTree;
+            }
+            out.push_back(stop);
         }
     }
     CHECK(withShapes >= 8);  // 10 stops ask for the cylinder or the hull
+    CHECK(withTree >= 2);    // stops 1 and 6 of the paper's tour show the ray tree
     const QByteArray env = qgetenv("RAYCACHE_KEYS_OUT");
     const QString path = env.isEmpty() ? QDir::temp().filePath("raycache_native_keys.json") : QString::fromLocal8Bit(env);
     QFile f(path);

@@ -3,7 +3,8 @@
 shipped tours. The window's side comes from the GUI test "[same-key]" (tests/ui/
 test_same_key.cpp), which writes, per stop, the roles of the shapes it drew and the core's
 key entries it showed; the page's from the page opened at ?tour=NAME&stop=K in headless
-Chromium at 1280x720 (the roles of the shapes its worker sent and its core key entries).
+Chromium at 1280x720 (the roles of the shapes its worker sent and its core key entries). At
+stops that show the Ray tree panel, its rows must equal the page's ray tree list.
 Exits 1 on any stop where they differ.
 
 Usage: same_key.py --gui-tests build/ui/raycache_gui_tests --page build/web-edition/web/index.html"""
@@ -60,6 +61,16 @@ def main():
                 continue
             page = json.loads(frame)
             same = sorted(s["roles"]) == page["roles"] and s["keys"] == page["keys"]
+            if "rayTree" in s:
+                # The page's ray tree list: the whole path is each row's first cell's tooltip
+                rows = json.loads(browser.evaluate(
+                    "JSON.stringify([...document.querySelectorAll('#ray-tree tr')].slice(1).map((r) => "
+                    "[r.cells[0].title].concat([...r.cells].slice(1).map((c) => c.textContent))))"))
+                tree_same = rows == s["rayTree"]
+                print(f"{where}: ray tree {'same' if tree_same else 'DIFFERENT'}: {len(rows)} rows")
+                if not tree_same:
+                    print(f"  window: {s['rayTree']}\n  page:   {rows}")
+                same = same and tree_same
             print(f"{where}: {'same' if same else 'DIFFERENT'}: {len(page['roles'])} roles, {len(page['keys'])} keys")
             if not same:
                 print(f"  window: {sorted(s['roles'])} {s['keys']}\n  page:   {page['roles']} {page['keys']}")
