@@ -9,7 +9,6 @@
 #include "analysis/beam_tree.h"
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
-#include "scene/nff_reader.h"
 
 using namespace rc;
 
@@ -77,33 +76,6 @@ TEST_CASE("the beam tree does not depend on the cache or order", "[beam]") {
             if (nodes < 0) nodes = n;
             REQUIRE(n == nodes);
         }
-    }
-}
-
-TEST_CASE("the beam tree holds the rays of a render, one each (cube:5, glass, balls2)", "[beam]") {
-    // (Its count against a second, brute-force one: tests/instructor/test_beam_oracles.cpp,
-    // which the student edition leaves out)
-    const std::string balls2 = std::string(RAYCACHE_SCENES_DIR) + "/balls2.nff";
-    const std::pair<std::shared_ptr<const Scene>, int> cases[] = {
-        {std::make_shared<const Scene>(makeBuiltin("cube:5")), 5},
-        {std::make_shared<const Scene>(makeBuiltin("glass")), 10},
-        {std::make_shared<const Scene>(readNffFile(balls2)), 5},
-    };
-    for (const auto& [scene, depth] : cases) {
-        INFO(scene->name);
-        RenderOptions o;
-        o.width = 40;
-        o.height = 32;
-        o.shading.maxDepth = depth;
-        RenderSession s(scene, o);
-        BeamTreeBuilder sparse(o.width, o.height);
-        s.addSink(&sparse);
-        s.run();
-        const BeamTreeStats stats = sparse.build();
-        // it holds the rays, one each, not an image per path
-        REQUIRE(sparse.storedRays() == std::int64_t(s.counters().totalRays()));
-        REQUIRE(stats.averageRayTreeSize == double(s.counters().totalRays()) / (o.width * o.height));
-        REQUIRE(stats.nodes > std::int64_t(sparse.paths().size()));  // more than one beam per path somewhere
     }
 }
 

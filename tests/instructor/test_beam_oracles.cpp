@@ -84,6 +84,10 @@ TEST_CASE("the beam tree counts what a dense per-path image counts (cube:5, glas
         const BeamTreeStats stats = sparse.build();
         REQUIRE(stats.nodes == dense.nodes());
         REQUIRE(sparse.paths().size() == dense.paths());
+        // it holds the rays, one each, not an image per path
+        REQUIRE(sparse.storedRays() == std::int64_t(s.counters().totalRays()));
+        REQUIRE(stats.averageRayTreeSize == double(s.counters().totalRays()) / (o.width * o.height));
+        REQUIRE(stats.nodes > std::int64_t(sparse.paths().size()));  // more than one beam per path somewhere
     }
 }
 
