@@ -31,7 +31,9 @@ or, for a region the answer leaves as the reference solution has it, the one lin
 and, only when the answer needs an #include or a helper outside the regions, one
 `// BEGIN PREAMBLE` ... `// END PREAMBLE` block before them, put after HOLE's last #include.
 Outside the blocks, comments and blank lines only. `splice` writes the program the
-instructor's build compiles: HOLE with each region (solution and stub) replaced by its answer. The edition leaves out tutorials/instructor/ and replaces
+instructor's build compiles: HOLE with each region (solution and stub) replaced by its answer. The edition leaves out tutorials/instructor/ (the reference answers, wrong answers and
+the checks' oracles: the checks read their answers as data, tutorials/NN-*/oracle_data.txt),
+tests/instructor/ (tests that compute a tutorial's answer apart from the library) and replaces
 each file under scripts/student_edition/replace/ (pages that quote solutions).
 """
 import html
@@ -48,7 +50,7 @@ STUB_END = re.compile(r'^\s*// END STUB\s*$')
 BLOCK = re.compile(r'^\s*// (BEGIN|END) (ANSWER|PREAMBLE)\s*$')
 KEEP = re.compile(r'^\s*// KEEP SOLUTION\s*$')
 INCLUDE = re.compile(r'^\s*#\s*include\b')
-LEFT_OUT = ('tutorials/instructor/', 'scripts/student_edition/')
+LEFT_OUT = ('tutorials/instructor/', 'tests/instructor/', 'scripts/student_edition/')
 REPLACE = 'scripts/student_edition/replace/'
 ALL = ['01', '02', '03', '04', '05', '06', '07']
 

@@ -222,21 +222,6 @@ TEST_CASE("images are identical across caches and orders on random scenes, --ver
     }
 }
 
-namespace {
-/// How far sphere `s` lies from the hull of spheres `a` and `b`, computed apart from the
-/// library: the hull is the union of the spheres interpolated between a and b, and the gap
-/// to the sphere interpolated at l is convex in l, so a ternary search finds its least value
-double hullGap(const Sphere& s, const Sphere& a, const Sphere& b) {
-    auto gap = [&](double l) { return glm::length(s.c - (a.c + l * (b.c - a.c))) - (a.r + l * (b.r - a.r)) - s.r; };
-    double lo = 0.0, hi = 1.0;
-    for (int i = 0; i < 200; ++i) {
-        const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
-        if (gap(m1) < gap(m2)) hi = m2;
-        else lo = m1;
-    }
-    return std::min({gap(0.0), gap(1.0), gap(0.5 * (lo + hi))});
-}
-}  // namespace
 
 TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]") {
     auto scene = std::make_shared<const Scene>(testing::randomScene(Layout::Overlapping, 9));
@@ -252,38 +237,20 @@ TEST_CASE("blocker lists are built lazily, once per pair met", "[cache][blocker]
     const int sites = lists->sites();
     REQUIRE(sites == scene->size() + 1 + int(scene->lights.size()));
     REQUIRE(n.blockerListsBuilt < std::size_t(sites * sites));
-    // Every list built holds exactly the objects whose bounding spheres meet the hull of
-    // its two sites, the target excepted, as a second computation of the hull finds them
-    // (up to a hair of rounding either way)
-    const double tolerance = 1e-7 * scene->extent();
-    std::uint64_t found = 0, longest = 0, listed = 0, borderline = 0;
+    // (What each list holds is checked against a second computation of the hull in
+    // tests/instructor/test_hull_oracles.cpp, which the student edition leaves out)
+    std::uint64_t found = 0, longest = 0, listed = 0;
     for (int origin = 0; origin < sites; ++origin)
         for (int target = 0; target < sites; ++target) {
             const std::vector<int>* list = lists->find(origin, target);
             if (!list) continue;
             ++found;
             longest = std::max<std::uint64_t>(longest, list->size());
-            const Sphere a = lists->siteSphere(origin), b = lists->siteSphere(target);
-            for (int id = 0; id < scene->size(); ++id) {
-                const double gap = hullGap(scene->objects[id].bound, a, b);
-                const bool in = std::count(list->begin(), list->end(), id) == 1;
-                INFO("pair " << origin << " -> " << target << " object " << id << " gap " << gap);
-                if (id == lists->siteObject(target)) {
-                    REQUIRE_FALSE(in);
-                } else if (gap < -tolerance) {
-                    REQUIRE(in);
-                } else if (gap > tolerance) {
-                    REQUIRE_FALSE(in);
-                } else {
-                    ++borderline;
-                }
-                listed += in;
-            }
+            listed += list->size();
         }
     REQUIRE(found == n.blockerListsBuilt);
     REQUIRE(longest == n.blockerListMax);
-    REQUIRE(listed > found);   // the lists are not empty
-    REQUIRE(borderline < 10);  // the tolerance decides almost nothing
+    REQUIRE(listed > found);  // the lists are not empty
     // The linear search finds the objects of a hull through its hierarchy of bounding
     // spheres: fewer measured than a scan, which measures every object once per list
     const std::uint64_t objects = std::uint64_t(scene->size());

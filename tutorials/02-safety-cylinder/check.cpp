@@ -1,9 +1,9 @@
 // Tutorial 02's check: rc::segmentDistance, rc::safetyRadius and rc::SafetyCylinder::contains
 // (your tutorials/02-safety-cylinder/exercise.cpp in a student build) against independent
-// oracles: the distance against a golden-section search along the segment in long double,
-// the containment test against that distance sampled at points along the new segment, and
-// the radius against the gap to the nearest other sphere by that distance, on random cases
-// and on cube:4's eye rays. Then what the renderer makes of them: the cylinder cache's
+// oracles, whose answers are data (oracles.h, oracle_data.txt): the distance against a
+// search along the segment in long double, the containment test against that distance
+// sampled at points along the new segment, and the radius against the gap to the nearest
+// other sphere by that distance, on random cases and on cube:4's eye rays. Then what the renderer makes of them: the cylinder cache's
 // picture of cube:4 equals the uncached one, and its hits fall in a stated range.
 #include <iomanip>
 #include <algorithm>
@@ -23,43 +23,27 @@
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
 #include "search/linear_search.h"
-#include "oracle_minimum.h"
+#include "oracles.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
 namespace {
 double closeEnough(double scale) { return 1e-9 * std::max(1.0, scale); }
 
-// The oracle's distance from p to the segment a-b: the least of |p - (a + u (b - a))| over
-// u in [0, 1], a convex function of u, by golden-section search in long double
-double segmentGap(const rc::Vec3& p, const rc::Vec3& a, const rc::Vec3& b) {
-    auto f = [&](long double u) {
-        long double d2 = 0.0L;
-        for (int i = 0; i < 3; ++i) {
-            const long double x = (long double)p[i] - ((long double)a[i] + u * ((long double)b[i] - (long double)a[i]));
-            d2 += x * x;
-        }
-        return std::sqrt(d2);
-    };
-    return double(tutorial::minimumOnUnit(f));
-}
+using tutorial::segmentGap;
 
 // A capsule: every point within `radius` of the segment a-b
 struct Capsule {
     rc::Vec3 a, b;
     double radius;
     // The oracle: is every one of 17 points spread along p-q within the radius?
-    bool contains(const rc::Vec3& p, const rc::Vec3& q) const {
-        for (int k = 0; k <= 16; ++k)
-            if (segmentGap(p + (q - p) * (k / 16.0), a, b) > radius) return false;
-        return true;
-    }
+    bool contains(const rc::Vec3& p, const rc::Vec3& q) const { return tutorial::capsuleContains(a, b, radius, p, q); }
 };
 }  // namespace
 
 TEST_CASE("segmentDistance agrees with the oracle on random points and segments", "[tutorial02]") {
     tutorial::Random rnd(1985);
-    for (int i = 0; i < 20000; ++i) {
+    for (int i = 0; i < 3000; ++i) {
         const double scale = rnd.logUniform(-3.0, 4.0);
         const rc::Vec3 a = scale * rnd.inBox(1.0);
         // Sometimes a degenerate segment, sometimes a very short one
@@ -74,7 +58,7 @@ TEST_CASE("segmentDistance agrees with the oracle on random points and segments"
 TEST_CASE("contains holds what the sampled capsule holds", "[tutorial02]") {
     tutorial::Random rnd(85);
     int inside = 0, tested = 0, oneEndOnly = 0;
-    for (int i = 0; i < 20000; ++i) {
+    for (int i = 0; i < 3000; ++i) {
         Capsule cyl{rnd.inBox(5.0), rnd.inBox(5.0), rnd.uniform(0.1, 3.0)};
         if (i % 10 == 0) cyl.b = cyl.a;  // a capsule around a point is a sphere
         // Points around the segment, about half of them inside the capsule
@@ -104,19 +88,15 @@ TEST_CASE("contains holds what the sampled capsule holds", "[tutorial02]") {
 }
 
 namespace {
-// The gap from the segment a-b to the nearest sphere but `hit`, by the oracle's distance
+// The gap from the segment a-b to the nearest sphere but `hit`, by the oracle
 double gap(const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a, const rc::Vec3& b) {
-    double r = rc::kNoHit;
-    int j = 0;
-    for (const rc::Sphere& s : spheres)
-        if (j++ != hit) r = std::min(r, segmentGap(s.c, a, b) - s.r);
-    return r;
+    return tutorial::sphereGap(spheres, hit, a, b);
 }
 }  // namespace
 
 TEST_CASE("safetyRadius is the gap to the nearest other sphere", "[tutorial02]") {
     tutorial::Random rnd(1985);
-    for (int i = 0; i < 2000; ++i) {
+    for (int i = 0; i < 1000; ++i) {
         std::vector<rc::Sphere> spheres(1 + rnd.index(12));
         for (rc::Sphere& s : spheres) s = {rnd.inBox(6.0), rnd.uniform(0.1, 1.5)};
         const int hit = rnd.index(int(spheres.size()));

@@ -4,7 +4,8 @@
 // every pixel once, answer pixels from the cache only when the cache holds their key, grow
 // each region through 4-neighbours, defer (not search) every pixel at a region's border,
 // finish a band before the next (the queue's bound), and start exactly as many regions as
-// a brute-force count of the connected pieces of equal keys in each band. Then what the
+// a brute-force count of the connected pieces of equal keys in each band (data: oracles.h,
+// oracle_data.txt). Then what the
 // renderer makes of it: cube:4 drawn in breadth-first order equals the scanline picture.
 #include <iomanip>
 #include <climits>
@@ -18,6 +19,8 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+
+#include "oracles.h"
 
 #include "order/breadth_first_order.h"
 #include "render/render_session.h"
@@ -79,33 +82,7 @@ std::vector<Visit> seedFill(int width, int height, int band, const std::vector<i
 
 namespace {
 
-// The oracle: how many regions a fill must seed. Each band is filled on its own, and a
-// region is everything the cache answers from one seed: the pixels of the band with the
-// seed's key that 4-neighbours join to it. So the count is the number of such connected
-// pieces of every band, found by brute force: every pixel starts with its own label, and
-// sweep after sweep each takes the least label of its 4-neighbours in the band with the same
-// key, until none changes.
-long oracleRegions(int width, int height, int band, const std::vector<int>& key) {
-    if (band <= 0 || band > height) band = height;
-    std::vector<int> label(std::size_t(width) * height);
-    for (int p = 0; p < width * height; ++p) label[p] = p;
-    long regions = 0;
-    for (int top = 0; top < height; top += band) {
-        const int bottom = std::min(height, top + band);
-        for (bool changed = true; changed;) {
-            changed = false;
-            for (int y = top; y < bottom; ++y)
-                for (int x = 0; x < width; ++x) {
-                    const int p = y * width + x;
-                    for (int q : {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > top ? p - width : -1,
-                                  y + 1 < bottom ? p + width : -1})
-                        if (q >= 0 && key[q] == key[p] && label[q] < label[p]) label[p] = label[q], changed = true;
-                }
-        }
-        for (int p = top * width; p < bottom * width; ++p) regions += label[p] == p;
-    }
-    return regions;
-}
+using tutorial::oracleRegions;
 
 // A small map of the image for a failure message: each pixel's key (a letter), and
 // each pixel's region so far (a digit, '.' not yet visited, '*' the pixel in question)

@@ -28,6 +28,7 @@
 #include <catch2/catch.hpp>
 
 #include "exercise.h"
+#include "oracles.h"
 #include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
 #include "search/query.h"
@@ -40,48 +41,9 @@ double angleBetween(const rc::Vec3& a, const rc::Vec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
-// The check's oracle for the empty cone. For each sphere, the ray from the apex is turned
-// from the axis towards the sphere's centre, in the plane of the two, until it meets the
-// sphere: bisection in long double on the angle, a ray meeting the sphere when its distance
-// from the centre (a cross product, no cancellation) is at most the radius. The cone opens
-// to the least such angle. No formula for the angle of the tangent.
+// The check's oracle for the empty cone (data: oracles.h, oracle_data.txt)
 double coneAngle(const rc::Vec3& apex, const rc::Vec3& axis, const std::vector<rc::Sphere>& spheres) {
-    using L = long double;
-    struct V {
-        L x, y, z;
-    };
-    auto dot = [](const V& a, const V& b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
-    auto cross = [](const V& a, const V& b) {
-        return V{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-    };
-    const L al = std::sqrt(L(axis.x) * axis.x + L(axis.y) * axis.y + L(axis.z) * axis.z);
-    const V a{axis.x / al, axis.y / al, axis.z / al};
-    L angle = INFINITY;
-    for (const rc::Sphere& s : spheres) {
-        const V v{L(s.c.x) - apex.x, L(s.c.y) - apex.y, L(s.c.z) - apex.z};
-        const L dist = std::sqrt(dot(v, v)), r = s.r;
-        if (dist <= r) return -1.0;  // the apex is inside: every ray meets it
-        // w: the unit vector in the plane of the axis and the centre, across the axis
-        V w{v.x - dot(v, a) * a.x, v.y - dot(v, a) * a.y, v.z - dot(v, a) * a.z};
-        L wl = std::sqrt(dot(w, w));
-        if (wl < 1e-30L) {  // the centre on the axis's line: any direction across it
-            w = std::abs(a.x) < 0.9L ? cross(a, V{1, 0, 0}) : cross(a, V{0, 1, 0});
-            wl = std::sqrt(dot(w, w));
-        }
-        w = {w.x / wl, w.y / wl, w.z / wl};
-        auto meets = [&](L theta) {
-            const V u{std::cos(theta) * a.x + std::sin(theta) * w.x, std::cos(theta) * a.y + std::sin(theta) * w.y,
-                      std::cos(theta) * a.z + std::sin(theta) * w.z};
-            const V c = cross(v, u);
-            return dot(v, u) > 0 && dot(c, c) <= r * r;
-        };
-        if (meets(0)) return -1.0;  // the ray along the axis meets it
-        const L alpha = std::atan2(std::sqrt(dot(cross(v, a), cross(v, a))), dot(v, a));
-        L lo = 0, hi = alpha;  // misses at lo, meets at hi (straight at the centre)
-        for (int k = 0; k < 100; ++k) (meets((lo + hi) / 2) ? hi : lo) = (lo + hi) / 2;
-        angle = std::min(angle, lo);
-    }
-    return double(angle);
+    return tutorial::oracleConeAngle(apex, axis, spheres);
 }
 
 // The complete search: the nearest sphere the ray hits, ties to the lower index
@@ -206,28 +168,6 @@ Scene loadScene(const std::string& name, int size) {
     return out;
 }
 
-// 4-connected pieces of pixels whose rays hit nothing: the beams of empty eye rays, by
-// brute force as tutorials 04 and 05 count theirs (every such pixel starts with its own
-// label; sweep after sweep each takes the least label of its empty 4-neighbours, until none
-// changes; each label left is one beam)
-long countBeams(int width, int height, const std::vector<int>& truth) {
-    std::vector<int> label(truth.size());
-    for (int p = 0; p < width * height; ++p) label[p] = p;
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (int p = 0; p < width * height; ++p) {
-            if (truth[p] >= 0) continue;
-            const int x = p % width, y = p / width;
-            for (const int q : {x > 0 ? p - 1 : -1, x + 1 < width ? p + 1 : -1, y > 0 ? p - width : -1,
-                                y + 1 < height ? p + width : -1})
-                if (q >= 0 && truth[q] < 0 && label[q] < label[p]) label[p] = label[q], changed = true;
-        }
-    }
-    long beams = 0;
-    for (int p = 0; p < width * height; ++p) beams += truth[p] < 0 && label[p] == p;
-    return beams;
-}
-
 template <class Make>
 Run drive(const Scene& scene, Make make) {
     const rc::RayGenerator camera(scene.camera, scene.width, scene.height);
@@ -279,7 +219,7 @@ Run drive(const Scene& scene, Make make) {
         run.cost += cost;
         if (truth < 0) run.emptyCost += cost;
     }
-    run.emptyBeams = countBeams(scene.width, scene.height, run.truth);
+    run.emptyBeams = tutorial::emptyBeams(scene.width, scene.height, run.truth);
     return run;
 }
 
@@ -319,32 +259,9 @@ double maxTestsPerAnswer(const Scene& scene) { return std::max(1.0, kListFractio
 constexpr double kChallengeSearchFraction = 0.2;  // of the one-empty-cone cache's searches on empty rays
 constexpr double kChallengeAfterEmpty = 0.5;      // rays after an empty ray answered by the cache
 
-// The yardstick of the challenge: the design notes' one exact answer, the empty cone of the
-// last ray that hit nothing, counted straight over the eye rays in scanline order (not a
-// cache: it reads the spheres, and its cone is the oracle's). A ray inside the cone is
-// answered; any other is searched, and an empty one, searched, makes the new cone with one
-// look at every sphere (n tests: one more complete search).
-struct OneCone {
-    long searches = 0, emptySearches = 0;
-    double cost = 0.0;  ///< complete searches, counting its n tests per new cone as one
-};
-OneCone oneCone(const Scene& scene) {
-    const rc::RayGenerator camera(scene.camera, scene.width, scene.height);
-    OneCone out;
-    rc::Vec3 axis{0.0};
-    double angle = -1.0;
-    for (int p = 0; p < scene.width * scene.height; ++p) {
-        const rc::Ray ray = camera.primary(p % scene.width, p / scene.width);
-        if (angle > 0.0 && angleBetween(axis, ray.d) < angle * (1.0 - 1e-9)) continue;
-        ++out.searches;
-        out.cost += 1.0;
-        if (nearest(ray, scene.spheres) >= 0) continue;
-        ++out.emptySearches;
-        out.cost += 1.0;
-        axis = ray.d;
-        angle = coneAngle(scene.camera.from, ray.d, scene.spheres);
-    }
-    return out;
+// The yardstick of the challenge (tutorial::oneCone, data: oracles.h, oracle_data.txt)
+tutorial::OneCone oneCone(const Scene& scene) {
+    return tutorial::oneCone(scene.spheres, scene.camera, scene.width, scene.height);
 }
 
 void printRow(const char* cache, const Run& r) {
@@ -418,7 +335,7 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
     for (const Scene& scene : scenes()) {
         const double n = double(scene.spheres.size());
         const Run cylinder = drive(scene, [](const CountedSpheres& s) { return std::make_unique<CylinderCache>(s); });
-        const OneCone cone = oneCone(scene);
+        const tutorial::OneCone cone = oneCone(scene);
         const Run yours = drive(scene, [](const CountedSpheres& s) { return tutorial::makeNothingCache(s); });
         std::printf("%s: %zu spheres, %ld eye rays, %ld hit nothing, in %ld beam(s)\n", scene.name.c_str(),
                     scene.spheres.size(), yours.rays, yours.emptyRays, yours.emptyBeams);
@@ -479,7 +396,7 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
 TEST_CASE("challenge: a fifth of the one-cone cache's complete searches on rays that hit nothing, cheaply",
           "[tutorial07]") {
     for (const Scene& scene : scenes()) {
-        const OneCone cone = oneCone(scene);
+        const tutorial::OneCone cone = oneCone(scene);
         const Run yours = drive(scene, [](const CountedSpheres& s) { return tutorial::makeNothingCache(s); });
         if (yours.firstWrong >= 0) {
             FAIL_CHECK(scene.name << ": a wrong answer at pixel (" << yours.firstWrong % scene.width << ", "
