@@ -12,9 +12,6 @@
 namespace rc {
 
 namespace {
-double angleBetween(const Vec3& u, const Vec3& v) {
-    return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
-}
 /// Kinds of rays that keep an entry per origin (shadow rays keep none)
 int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Reflection ? 1 : 2; }
 }  // namespace
@@ -230,6 +227,7 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
 }
 
 void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
+    // BEGIN SOLUTION 07
     // [empty-cone]
     // Rays leave from anywhere in the origin's sphere (a point for the eye): direction d
     // misses sphere j if its angle theta_j to c_j exceeds beta_j = asin((r_j + r_origin) / dist)
@@ -261,6 +259,9 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
             // Nothing farther can narrow the cone; with no cone at all, nothing can matter
             limit = angle < 0.0 ? -kNoHit : 1.0 - pm::cos(angle) + 1e-12;
         }
+        static double angleBetween(const Vec3& u, const Vec3& v) {
+            return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+        }
         const Scene& scene;
         Sphere from;
         Vec3 axis;
@@ -273,6 +274,12 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     search_.cull(cone);
     e.coneAngle = std::min(cone.angle, std::numbers::pi) - 1e-9;
     // [empty-cone]
+    // END SOLUTION
+    // BEGIN STUB
+    // // The widest empty cone is tutorial 07's basic part: this edition has no cone, and the
+    // // eye's rays that hit nothing keep the cylinder of safety, as in `blocker`
+    // e.coneAngle = -1.0;
+    // END STUB
     e.coneCos = pm::cos(e.coneAngle);
     e.coneSin = pm::sin(e.coneAngle) * (1.0 - 1e-12);
     ++n.conesBuilt;
