@@ -1,6 +1,6 @@
 #include "search/blocker_cache.h"
 #include "geometry/portable_math.h"
-#include "search/sphere_batch.h"
+#include "search/packed_spheres.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@ int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Refle
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
-      lists_(scene, search, plus_, plus_), cylinders_(scene, search), packed_(scene) {
+      lists_(scene, search, plus_, plus_), cylinders_(scene, search), packed_(std::make_unique<PackedSpheres>(scene)) {
     if (plus_) byOrigin_.assign(3 * (std::size_t(scene.size()) + 1), kNotKept);
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
@@ -26,6 +26,8 @@ BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Var
     if (directed_ && !search.cheap()) directions_ = std::make_unique<DirectionLists>(scene, search, lists_);
     // [direction-lists-where]
 }
+
+BlockerCache::~BlockerCache() = default;
 
 namespace {
 /// The blocker cache at a checkpoint: how many lists were built, and the entries by origin.
@@ -121,7 +123,7 @@ Lookup BlockerCache::searchMissed(const Query& q, CacheEntry& e, MissReason why,
     // Blocker+dir: only the objects in the ray's direction from its site can be hit, nearest first
     const DirectionList& list = directions_->get(lists_.originSite(q), q.ray.d, e.directions, n);
     Answer best;
-    packed_.testNearestFirst(scene_, q, list.ids.data(), list.reach.data(), list.ids.size(), best, n);
+    packed_->testNearestFirst(scene_, q, list.ids.data(), list.reach.data(), list.ids.size(), best, n);
     ++n.directionSearches;
     reload(q, best, e, n);
     return {true, best, Decision::Miss, why};
@@ -200,7 +202,7 @@ void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer&
     // The paper: every potential blocker is tested. Blocker+: nearest first, and none
     // beyond the nearest hit known (or the light) can come first. Four spheres are
     // rejected at a time where the processor can (PackedSpheres): the same answers and counts
-    packed_.testNearestFirst(scene_, q, list.ids.data(), plus_ ? list.reach.data() : nullptr, list.ids.size(), best, n);
+    packed_->testNearestFirst(scene_, q, list.ids.data(), plus_ ? list.reach.data() : nullptr, list.ids.size(), best, n);
     // [test-blockers]
 }
 
