@@ -1,6 +1,6 @@
 #include "search/blocker_cache.h"
 #include "geometry/portable_math.h"
-#include "search/sphere_batch.h"
+#include "search/packed_spheres.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,16 +12,13 @@
 namespace rc {
 
 namespace {
-double angleBetween(const Vec3& u, const Vec3& v) {
-    return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
-}
 /// Kinds of rays that keep an entry per origin (shadow rays keep none)
 int kindSlot(RayKind k) { return k == RayKind::Primary ? 0 : k == RayKind::Reflection ? 1 : 2; }
 }  // namespace
 
 BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant)
     : CacheStrategy(scene, search), plus_(variant != Variant::Paper), directed_(variant == Variant::Directions),
-      lists_(scene, search, plus_, plus_), cylinders_(scene, search), packed_(scene) {
+      lists_(scene, search, plus_, plus_), cylinders_(scene, search), packed_(std::make_unique<PackedSpheres>(scene)) {
     if (plus_) byOrigin_.assign(3 * (std::size_t(scene.size()) + 1), kNotKept);
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
@@ -29,6 +26,8 @@ BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Var
     if (directed_ && !search.cheap()) directions_ = std::make_unique<DirectionLists>(scene, search, lists_);
     // [direction-lists-where]
 }
+
+BlockerCache::~BlockerCache() = default;
 
 namespace {
 /// The blocker cache at a checkpoint: how many lists were built, and the entries by origin.
@@ -124,7 +123,7 @@ Lookup BlockerCache::searchMissed(const Query& q, CacheEntry& e, MissReason why,
     // Blocker+dir: only the objects in the ray's direction from its site can be hit, nearest first
     const DirectionList& list = directions_->get(lists_.originSite(q), q.ray.d, e.directions, n);
     Answer best;
-    packed_.testNearestFirst(scene_, q, list.ids.data(), list.reach.data(), list.ids.size(), best, n);
+    packed_->testNearestFirst(scene_, q, list.ids.data(), list.reach.data(), list.ids.size(), best, n);
     ++n.directionSearches;
     reload(q, best, e, n);
     return {true, best, Decision::Miss, why};
@@ -203,7 +202,7 @@ void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer&
     // The paper: every potential blocker is tested. Blocker+: nearest first, and none
     // beyond the nearest hit known (or the light) can come first. Four spheres are
     // rejected at a time where the processor can (PackedSpheres): the same answers and counts
-    packed_.testNearestFirst(scene_, q, list.ids.data(), plus_ ? list.reach.data() : nullptr, list.ids.size(), best, n);
+    packed_->testNearestFirst(scene_, q, list.ids.data(), plus_ ? list.reach.data() : nullptr, list.ids.size(), best, n);
     // [test-blockers]
 }
 
@@ -230,6 +229,7 @@ void BlockerCache::reload(const Query& q, const Answer& a, CacheEntry& e, Counte
 }
 
 void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
+    // BEGIN SOLUTION 07
     // [empty-cone]
     // Rays leave from anywhere in the origin's sphere (a point for the eye): direction d
     // misses sphere j if its angle theta_j to c_j exceeds beta_j = asin((r_j + r_origin) / dist)
@@ -261,6 +261,9 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
             // Nothing farther can narrow the cone; with no cone at all, nothing can matter
             limit = angle < 0.0 ? -kNoHit : 1.0 - pm::cos(angle) + 1e-12;
         }
+        static double angleBetween(const Vec3& u, const Vec3& v) {
+            return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+        }
         const Scene& scene;
         Sphere from;
         Vec3 axis;
@@ -273,6 +276,12 @@ void BlockerCache::buildCone(CacheEntry& e, Counters& n) const {
     search_.cull(cone);
     e.coneAngle = std::min(cone.angle, std::numbers::pi) - 1e-9;
     // [empty-cone]
+    // END SOLUTION
+    // BEGIN STUB
+    // // The widest empty cone is tutorial 07's basic part: this edition has no cone, and the
+    // // eye's rays that hit nothing keep the cylinder of safety, as in `blocker`
+    // e.coneAngle = -1.0;
+    // END STUB
     e.coneCos = pm::cos(e.coneAngle);
     e.coneSin = pm::sin(e.coneAngle) * (1.0 - 1e-12);
     ++n.conesBuilt;

@@ -7,9 +7,10 @@
 #include "search/cache_strategy.h"
 #include "search/cylinder_of_safety.h"
 #include "search/direction_lists.h"
-#include "search/packed_spheres.h"
 
 namespace rc {
+
+class PackedSpheres;
 
 /// Hanrahan (1986): the cache holds the last object hit; a ray hits the cache when it
 /// hits that object and none of the potential blockers between its origin and that
@@ -44,6 +45,7 @@ class BlockerCache : public CacheStrategy {
 public:
     enum class Variant { Paper, Plus, Directions };
     BlockerCache(const Scene& scene, const CompleteSearch& search, Variant variant);
+    ~BlockerCache() override;
     CacheKind kind() const override {
         return directed_ ? CacheKind::BlockerDirections : plus_ ? CacheKind::BlockerPlus : CacheKind::Blocker;
     }
@@ -89,8 +91,9 @@ private:
     /// Blocker+dir in front of the linear scan: the objects in each direction from each site
     /// (elsewhere blocker+dir is blocker+)
     std::unique_ptr<DirectionLists> directions_;
-    /// Every sphere by id, for testing lists four at a time
-    PackedSpheres packed_;
+    /// Every sphere by id, for testing lists four at a time (search/packed_spheres.h, which
+    /// tests objects and so holds solution regions, is included only by the sources that test)
+    std::unique_ptr<const PackedSpheres> packed_;
 };
 
 }  // namespace rc

@@ -1,4 +1,5 @@
 #include "search/bounding_volume_hierarchy.h"
+#include "search/sphere_batch.h"
 
 #include <algorithm>
 #include <array>
@@ -40,7 +41,8 @@ void grow(double* lo, double* hi, const double* box) {
 }
 }  // namespace
 
-BoundingVolumeHierarchy::BoundingVolumeHierarchy(const Scene& scene) : CompleteSearch(scene) {
+BoundingVolumeHierarchy::BoundingVolumeHierarchy(const Scene& scene)
+    : CompleteSearch(scene), leaf_(std::make_unique<SphereBatch>()) {
     if (scene.size() == 0) return;
     // Boxes widened by a few ulps of the scene: rounding in the slab test never loses a hit
     pad_ = 1e-9 * scene.extent() + 1e-300;
@@ -66,8 +68,10 @@ BoundingVolumeHierarchy::BoundingVolumeHierarchy(const Scene& scene) : CompleteS
     for (int id = 0; id < scene.size(); ++id) ids[id] = id;
     root_ = build(ids, 0, int(ids.size()), boxes, 1, rootBox_);
     order_ = ids;
-    for (int id : order_) leaf_.add(scene, id);
+    for (int id : order_) leaf_->add(scene, id);
 }
+
+BoundingVolumeHierarchy::~BoundingVolumeHierarchy() = default;
 
 BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& ids, int begin, int end,
                                                             const std::vector<double>& boxes, int depth, Box& node) {
@@ -182,7 +186,7 @@ Answer BoundingVolumeHierarchy::nearest(const Query& q, Counters& n) const {
         if (enters[top] > limit) continue;  // the nearest hit moved in front of it
         if (stack[top] < 0) {
             const Leaf& leaf = leaves_[~stack[top]];
-            leaf_.test(scene_, q, std::size_t(leaf.first), std::size_t(leaf.first + leaf.count), best, n);
+            leaf_->test(scene_, q, std::size_t(leaf.first), std::size_t(leaf.first + leaf.count), best, n);
             continue;
         }
         const Node& node = nodes_[stack[top]];

@@ -4,12 +4,14 @@
 /// bounding boxes"): a complete search that opens only the boxes a ray enters, and answers
 /// the caches' culling queries (blocker hulls, cylinders of safety, empty cones) by the
 /// bounding spheres of the same tree.
+#include <memory>
 #include <vector>
 
 #include "search/complete_search.h"
-#include "search/sphere_batch.h"
 
 namespace rc {
+
+class SphereBatch;
 
 /// A binary tree over the objects, split by the surface area heuristic. Each node holds
 /// an axis-aligned box (for rays) and a sphere around its objects' bounding spheres (for
@@ -19,6 +21,7 @@ namespace rc {
 class BoundingVolumeHierarchy final : public CompleteSearch {
 public:
     explicit BoundingVolumeHierarchy(const Scene& scene);
+    ~BoundingVolumeHierarchy() override;
     Answer nearest(const Query& q, Counters& n) const override;
     std::string name() const override { return "bvh"; }
     /// Descends only into nodes whose bounding sphere meets `c`.
@@ -60,7 +63,9 @@ private:
     Ref root_ = 0;
     Box rootBox_{};
     std::vector<int> order_;      ///< object ids in leaf order
-    SphereBatch leaf_;            ///< the same objects, stored for the ray loop
+    /// The same objects, stored for the ray loop (search/sphere_batch.h, which tests objects
+    /// and so holds solution regions, is included only by the sources that test)
+    std::unique_ptr<SphereBatch> leaf_;
     double pad_ = 0.0;
     int depth_ = 0;
 };

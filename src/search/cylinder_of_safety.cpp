@@ -88,17 +88,28 @@ Lookup CylinderOfSafety::probe(const Query& q, CacheEntry& e, Counters& n) const
         a = {e.object, t};
     }
     // Then the new segment must stay inside the cylinder of safety (built the first time
-    // a segment may fit in it). The capsule is convex: both ends inside is enough
+    // a segment may fit in it)
     ++n.cylinderTests;
     const Vec3 end = segmentEnd(q, a);
-    // A ray from the kept segment's own start (an eye ray after an eye ray) strays 0 there:
-    // the distance of a segment's end point is exactly 0, so it is not measured
+    // [probe-cylinder]
+    // BEGIN SOLUTION 02
+    // [probe-contains]
+    // The capsule is convex: both ends inside is enough. A ray from the kept segment's own
+    // start (an eye ray after an eye ray) strays 0 there: the distance of a segment's end
+    // point is exactly 0, so it is not measured
     const double fromStart = q.ray.o == e.cylinder.a ? 0.0 : e.cylinder.distance(q.ray.o);
     const double strays = std::max(fromStart, e.cylinder.distance(end));
     if (e.pending) buildFor(e, strays, n);
     if (!(strays <= e.cylinder.radius)) return {false, {}, Decision::Miss, MissReason::LeftCylinder};
+    // [probe-contains]
+    // END SOLUTION
+    // BEGIN STUB
+    // // Tutorial 02's rc::SafetyCylinder::contains decides. The cylinder is built whenever
+    // // it may be needed at all (need 0), not only when the new segment may fit in it
+    // if (e.pending) buildFor(e, 0.0, n);
+    // if (!e.cylinder.contains(q.ray.o, end)) return {false, {}, Decision::Miss, MissReason::LeftCylinder};
+    // END STUB
     return {true, a, Decision::Hit, MissReason::None};
-    // [probe-cylinder]
 }
 
 }  // namespace rc

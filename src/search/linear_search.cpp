@@ -1,6 +1,7 @@
 #include "search/linear_search.h"
 
 #include "search/bounding_volume_hierarchy.h"
+#include "search/sphere_batch.h"
 #include "search/standard_algorithm.h"
 
 namespace rc {
@@ -20,7 +21,9 @@ void LinearSearch::cull(SphereCull& c) const {
 }
 
 LinearSearch::LinearSearch(const Scene& scene, Regions regions) : CompleteSearch(scene) {
-    for (int id = 0; id < scene.size(); ++id) all_.add(scene, id);
+    auto all = std::make_unique<SphereBatch>();
+    for (int id = 0; id < scene.size(); ++id) all->add(scene, id);
+    all_ = std::move(all);
     if (regions == Regions::Hierarchy) regions_ = std::make_unique<const BoundingVolumeHierarchy>(scene);
 }
 
@@ -33,7 +36,7 @@ Answer LinearSearch::nearest(const Query& q, Counters& n) const {
     // [linear-search]
     // Test every object; keep the nearest hit in front of tmax
     Answer best;
-    all_.test(scene_, q, 0, all_.size(), best, n);
+    all_->test(scene_, q, 0, all_->size(), best, n);
     return best;
     // [linear-search]
 }

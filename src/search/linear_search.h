@@ -5,11 +5,11 @@
 #include <string>
 
 #include "search/complete_search.h"
-#include "search/sphere_batch.h"
 
 namespace rc {
 
 class BoundingVolumeHierarchy;
+class SphereBatch;
 
 /// Tests every object in the scene: the paper's "standard ray-tracing algorithm".
 ///
@@ -32,7 +32,9 @@ public:
     bool cheap() const override { return false; }
 
 private:
-    SphereBatch all_;  ///< every object, in id order
+    /// Every object, in id order (search/sphere_batch.h, which tests objects and so holds
+    /// solution regions, is included only by the sources that test)
+    std::unique_ptr<const SphereBatch> all_;
     /// The bounding spheres of the objects, for region queries (none: scan them all)
     std::unique_ptr<const BoundingVolumeHierarchy> regions_;
 };

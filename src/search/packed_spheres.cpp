@@ -33,6 +33,8 @@ __attribute__((target("avx2"))) void testFour(const Scene& scene, const Query& q
         const __m256d ce0 = _mm256_unpacklo_pd(c, e), ce1 = _mm256_unpackhi_pd(c, e);
         const __m256d cx = _mm256_permute2f128_pd(ab0, ce0, 0x20), cy = _mm256_permute2f128_pd(ab1, ce1, 0x20);
         const __m256d cz = _mm256_permute2f128_pd(ab0, ce0, 0x31), r2 = _mm256_permute2f128_pd(ab1, ce1, 0x31);
+        // [packed-four]
+        // BEGIN SOLUTION 06
         // clearlyMisses(), operation for operation
         const __m256d fx = _mm256_sub_pd(ox, cx), fy = _mm256_sub_pd(oy, cy), fz = _mm256_sub_pd(oz, cz);
         const __m256d bb = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(fx, dx), _mm256_mul_pd(fy, dy)),
@@ -44,6 +46,13 @@ __attribute__((target("avx2"))) void testFour(const Scene& scene, const Query& q
         const __m256d scale = _mm256_add_pd(
             _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(fx, fx), _mm256_mul_pd(fy, fy)), _mm256_mul_pd(fz, fz)), r2);
         const int rejected = _mm256_movemask_pd(_mm256_cmp_pd(disc, _mm256_mul_pd(margin, scale), _CMP_LT_OQ));
+        // END SOLUTION
+        // BEGIN STUB
+        // // Tutorial 06 is open: clearlyMisses() rejects nothing, and neither does this loop
+        // const int rejected = 0;
+        // (void)ox, (void)oy, (void)oz, (void)dx, (void)dy, (void)dz, (void)cx, (void)cy, (void)cz, (void)margin;
+        // END STUB
+        // [packed-four-all]
         // All four plain spheres, all rejected, all within reach: four tests counted, nothing else
         const int notSpheres = _mm256_movemask_pd(_mm256_cmp_pd(r2, zero, _CMP_LT_OQ));
         const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + i));
@@ -52,7 +61,7 @@ __attribute__((target("avx2"))) void testFour(const Scene& scene, const Query& q
             n.intersectionTests += 4;
             continue;
         }
-        // [packed-four]
+        // [packed-four-all]
         for (std::size_t j = 0; j < 4; ++j) {
             if (reach && !(reach[i + j] <= std::min(best.t, q.tmax))) return;
             PackedSpheres::visit(scene, q, ids[i + j], all[ids[i + j]], (rejected >> j) & 1, best, n);

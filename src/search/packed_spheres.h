@@ -65,8 +65,7 @@ public:
         }
         ++n.intersectionTests;
         if (rejected) return;
-        const double t = scene.intersect(q.ray, id, q.origin);
-        if (t < q.tmax && nearer(t, id, best)) best = {id, t};
+        keepNearer(scene, q, id, best);
     }
 
 private:

@@ -31,13 +31,4 @@ inline bool nearer(double t, int id, const Answer& than) {
     return t < than.t || (t == than.t && id < than.object);
 }
 
-/// Tests object `id` against `q` and keeps it in `best` if it is nearer. Counts the test;
-/// a ray leaving a sphere or polygon it starts on is skipped for free (convexity).
-inline void testObject(const Scene& scene, const Query& q, int id, Answer& best, Counters& n) {
-    if (id == q.origin.object && !q.origin.inside) return;
-    ++n.intersectionTests;
-    const double t = scene.intersect(q.ray, id, q.origin);
-    if (t < q.tmax && nearer(t, id, best)) best = {id, t};
-}
-
 }  // namespace rc

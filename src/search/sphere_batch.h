@@ -3,41 +3,12 @@
 /// \brief Objects stored for the complete search's inner loop: sphere centres and squared
 /// radii in arrays of their own (structure of arrays), so a run of tests is one tight
 /// loop with no lookup through the scene and no call for the common case, a miss.
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
-#include "search/query.h"
+#include "search/object_test.h"
 
 namespace rc {
-
-/// Does the ray (o, d) clearly miss the sphere centred at (cx, cy, cz) with squared radius
-/// r2? Its stable discriminant, as sphereRootsStable() computes it, is negative by more than
-/// a margin of rounding, which absorbs any difference in how the compiler fused this
-/// arithmetic and the full test's. A sphere it does not reject may still be missed.
-inline bool clearlyMisses(const Vec3& o, const Vec3& d, double cx, double cy, double cz, double r2) {
-    const double fx = o.x - cx, fy = o.y - cy, fz = o.z - cz;
-    const double b = fx * d.x + fy * d.y + fz * d.z;
-    const double lx = fx - b * d.x, ly = fy - b * d.y, lz = fz - b * d.z;
-    const double disc = r2 - (lx * lx + ly * ly + lz * lz);
-    return disc < -1e-12 * (fx * fx + fy * fy + fz * fz + r2);
-}
-
-/// testObject() with the quick rejection of a sphere the ray clearly misses: the same
-/// answers and counts, for lists tested one object at a time.
-inline void testObjectQuickly(const Scene& scene, const Query& q, int id, Answer& best, Counters& n) {
-    const Object& obj = scene.objects[id];
-    if (obj.shape != Shape::Sphere || id == q.origin.object) {
-        testObject(scene, q, id, best, n);
-        return;
-    }
-    ++n.intersectionTests;
-    const Sphere& s = scene.spheres[obj.index];
-    if (clearlyMisses(q.ray.o, q.ray.d, s.c.x, s.c.y, s.c.z, s.r * s.r)) return;
-    const double t = scene.intersect(q.ray, id, q.origin);
-    if (t < q.tmax && nearer(t, id, best)) best = {id, t};
-}
 
 /// A run of objects to test against rays. Spheres are rejected in the loop when their
 /// discriminant is clearly negative; everything else (a possible hit, a polygon, the
@@ -63,8 +34,7 @@ public:
             // The stable discriminant clearly negative: a miss
             ++n.intersectionTests;
             if (clearlyMisses(o, d, x_[i], y_[i], z_[i], radius2_[i])) continue;
-            const double t = scene.intersect(q.ray, id, q.origin);
-            if (t < q.tmax && nearer(t, id, best)) best = {id, t};
+            keepNearer(scene, q, id, best);
         }
         // [sphere-batch]
     }

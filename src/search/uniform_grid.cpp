@@ -6,6 +6,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "search/object_test.h"
+
 namespace rc {
 
 namespace {
