@@ -128,12 +128,14 @@ TEST_CASE("the tests heatmap: a log scale to the top, untraced pixels black", "[
 TEST_CASE("a stop is read by the command line's definitions, with the CLI's limits", "[tour][view][stop]") {
     const std::string largest = std::to_string(rc::NffLimits::maxResolution);
     const rc::Tour tour = rc::parseTour(R"({"stops": [
-  {"title": "Fine", "caption": "c.", "scene": "pair", "width": )" + largest + R"(, "overlays": ["cone", "none", "miss"]},
+  {"title": "Fine", "caption": "c.", "scene": "pair", "width": )" + largest + R"(, "overlays": ["cone", "none", "miss"],
+   "orbit": "-30,10"},
   {"title": "Wide", "caption": "c.", "scene": "pair", "width": )" + std::to_string(rc::NffLimits::maxResolution + 1) + R"(},
   {"title": "Bad", "caption": "c.", "scene": "pair", "focus": "4,4,2,2"}]})", "t.json");
     const rc::ViewerSettings fine = rc::stopSettings(tour, 1);
     REQUIRE(fine.width == int(rc::NffLimits::maxResolution));
     REQUIRE(fine.overlays == std::vector<std::string>{"misses"});  // none clears what came before it
+    REQUIRE(fine.orbitYaw == -30);  // a value may start with '-'
     // What the stop reads is what the same flags on a command line read
     rc::ViewerSettings flags;
     REQUIRE(rc::readSettings(rc::stopArguments(tour, 1), flags).empty());
@@ -147,7 +149,7 @@ TEST_CASE("a stop is read by the command line's definitions, with the CLI's limi
         } catch (const rc::TourError& e) {
             const std::string what = e.what();
             INFO(what);
-            REQUIRE(what.rfind("t.json:" + std::to_string(k + 1) + ":3: stop " + std::to_string(k) + " (", 0) == 0);
+            REQUIRE(what.rfind("t.json:" + std::to_string(k + 2) + ":3: stop " + std::to_string(k) + " (", 0) == 0);
             REQUIRE(what.find(k == 2 ? "--width" : "--focus must be x0,y0,x1,y1") != std::string::npos);
         }
     }

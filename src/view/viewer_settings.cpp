@@ -333,8 +333,8 @@ std::vector<std::string> stopArguments(const Tour& tour, int k) {
             args.push_back(stopScene(tour, st));  // a relative path: beside the tour
             continue;
         }
-        args.push_back("--" + s.key);
-        if (!s.value.empty()) args.push_back(s.value);
+        // --key=value: a value that starts with '-' (an orbit of -30,10) is still the key's
+        args.push_back("--" + s.key + (s.value.empty() ? "" : "=" + s.value));
     }
     return args;
 }
