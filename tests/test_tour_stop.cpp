@@ -2,6 +2,7 @@
 // and its rays applied to a render, as the web page does through its bindings.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -153,4 +154,16 @@ TEST_CASE("a stop is read by the command line's definitions, with the CLI's limi
             REQUIRE(what.find(k == 2 ? "--width" : "--focus must be x0,y0,x1,y1") != std::string::npos);
         }
     }
+}
+
+TEST_CASE("the keys a stop may hold are the settings the one reader declares", "[tour][view][stop]") {
+    const std::vector<std::string>& names = rc::tourSettingNames();
+    auto has = [&names](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+    for (const char* n : {"scene", "cache", "width", "spp", "seed", "overlays", "select", "zoom", "scene-view", "orbit",
+                          "focus", "panels", "miss-reason", "run"})
+        REQUIRE(has(n));
+    for (const char* n : {"help", "screenshot", "window", "tour", "stop"}) REQUIRE_FALSE(has(n));  // the window's own
+    // A window-only flag in a stop is refused by the tour's parser
+    REQUIRE_THROWS_WITH(rc::parseTour(R"({"stops": [{"title": "T", "caption": "c.", "scene": "pair", "window": "9x9"}]})", "t.json"),
+                        Catch::Contains("unknown stop setting 'window'"));
 }

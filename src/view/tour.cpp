@@ -27,11 +27,8 @@ std::string TourStop::value(const std::string& key, const std::string& otherwise
 }
 
 const std::vector<std::string>& tourSettingNames() {
-    static const std::vector<std::string> names = {
-        "scene", "cache", "order", "accel", "band", "width", "height", "steps", "select", "overlays", "heatmap",
-        "scene-view", "orbit", "zoom", "focus", "compare", "miss-reason", "spp", "light-radius",
-        "shadow-samples", "gloss", "gloss-samples", "seed", "panels", "run"};
-    return names;
+    // The viewer's settings, as their one reader declares them (rc::SettingsFlags)
+    return settingNames();
 }
 
 namespace {

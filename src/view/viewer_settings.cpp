@@ -302,6 +302,21 @@ bool SettingsFlags::read(ViewerSettings& out, std::string& error) const {
     return readRender(*v_, out, error) && readShow(*v_, out, error) && readRun(*v_, out, error);
 }
 
+const std::vector<std::string>& settingNames() {
+    static const std::vector<std::string> names = [] {
+        CLI::App app;
+        app.set_help_flag();  // no --help: only the settings
+        const SettingsFlags flags(app);
+        std::vector<std::string> out;
+        for (const CLI::Option* o : app.get_options()) {
+            std::string n = o->get_name();
+            out.push_back(n.rfind("--", 0) == 0 ? n.substr(2) : n);
+        }
+        return out;
+    }();
+    return names;
+}
+
 std::vector<std::string> parseOrder(const std::vector<std::string>& args) {
     std::vector<std::string> out;
     for (std::size_t i = 0; i < args.size(); ++i) {

@@ -73,6 +73,9 @@ private:
     std::unique_ptr<Values> v_;
 };
 
+/// The settings' names, without the dashes, as SettingsFlags declares them: "scene", "cache", ...
+const std::vector<std::string>& settingNames();
+
 /// `args` (the program's name left out) as CLI::App::parse takes them: last first, and a
 /// `--scene-view` with no angle after it given its default, side.
 std::vector<std::string> parseOrder(const std::vector<std::string>& args);
