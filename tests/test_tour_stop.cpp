@@ -1,13 +1,15 @@
-// A tour stop applied (view/tour_stop.h): its settings read once into what a viewer sets,
+// A tour stop applied (view/tour_stop.h): its settings read once (view/viewer_settings.h) into what a viewer sets,
 // and its rays applied to a render, as the web page does through its bindings.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
 
 #include "order/ray_order.h"
 #include "scene/builtin_scenes.h"
+#include "scene/nff_reader.h"
 #include "search/cache_strategy.h"
 #include "view/heatmap.h"
 #include "view/palette.h"
@@ -123,4 +125,46 @@ TEST_CASE("the tests heatmap: a log scale to the top, untraced pixels black", "[
     REQUIRE(rgba[std::size_t(traced) * 4 + 2] == c.b);
     REQUIRE(rgba[std::size_t(untraced) * 4] == 0);
     REQUIRE(rgba[std::size_t(untraced) * 4 + 3] == 255);
+}
+
+TEST_CASE("a stop is read by the command line's definitions, with the CLI's limits", "[tour][view][stop]") {
+    const std::string largest = std::to_string(rc::NffLimits::maxResolution);
+    const rc::Tour tour = rc::parseTour(R"({"stops": [
+  {"title": "Fine", "caption": "c.", "scene": "pair", "width": )" + largest + R"(, "overlays": ["cone", "none", "miss"],
+   "orbit": "-30,10"},
+  {"title": "Wide", "caption": "c.", "scene": "pair", "width": )" + std::to_string(rc::NffLimits::maxResolution + 1) + R"(},
+  {"title": "Bad", "caption": "c.", "scene": "pair", "focus": "4,4,2,2"}]})", "t.json");
+    const rc::ViewerSettings fine = rc::stopSettings(tour, 1);
+    REQUIRE(fine.width == int(rc::NffLimits::maxResolution));
+    REQUIRE(fine.overlays == std::vector<std::string>{"misses"});  // none clears what came before it
+    REQUIRE(fine.orbitYaw == -30);  // a value may start with '-'
+    // What the stop reads is what the same flags on a command line read
+    rc::ViewerSettings flags;
+    REQUIRE(rc::readSettings(rc::stopArguments(tour, 1), flags).empty());
+    REQUIRE(flags.width == fine.width);
+    REQUIRE(flags.overlays == fine.overlays);
+    // A bad stop is a sentence at its place, naming the flag
+    for (int k : {2, 3}) {
+        try {
+            (void)rc::planOf(tour, k);
+            FAIL("stop " << k << " was read");
+        } catch (const rc::TourError& e) {
+            const std::string what = e.what();
+            INFO(what);
+            REQUIRE(what.rfind("t.json:" + std::to_string(k + 2) + ":3: stop " + std::to_string(k) + " (", 0) == 0);
+            REQUIRE(what.find(k == 2 ? "--width" : "--focus must be x0,y0,x1,y1") != std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("the keys a stop may hold are the settings the one reader declares", "[tour][view][stop]") {
+    const std::vector<std::string>& names = rc::tourSettingNames();
+    auto has = [&names](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+    for (const char* n : {"scene", "cache", "width", "spp", "seed", "overlays", "select", "zoom", "scene-view", "orbit",
+                          "focus", "panels", "miss-reason", "run"})
+        REQUIRE(has(n));
+    for (const char* n : {"help", "screenshot", "window", "tour", "stop"}) REQUIRE_FALSE(has(n));  // the window's own
+    // A window-only flag in a stop is refused by the tour's parser
+    REQUIRE_THROWS_WITH(rc::parseTour(R"({"stops": [{"title": "T", "caption": "c.", "scene": "pair", "window": "9x9"}]})", "t.json"),
+                        Catch::Contains("unknown stop setting 'window'"));
 }

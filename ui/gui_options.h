@@ -13,6 +13,7 @@
 #include "render/render_session.h"
 #include "view/session_state.h"
 #include "view/tour.h"
+#include "view/viewer_settings.h"
 
 namespace rcgui {
 
@@ -93,12 +94,17 @@ rc::RenderOptions sizedOptions(rc::RenderOptions o, int longerSide, const rc::Sc
 /// The outcome of parsing.
 enum class ParseResult { Ok, Help, Error };
 
-/// Parses `args` (argv, program name first). On Help, `message` is the help text; on
+/// Parses `args` (argv, program name first): the viewer's settings (rc::SettingsFlags, with
+/// the CLI's limits), then the window's own flags. On Help, `message` is the help text; on
 /// Error, it says what is wrong.
 ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& message);
 
-/// The options a tour stop stands for: its settings read as the command line's flags, on
-/// top of `base`'s window, fonts and output choices. On an error, `message` is
+/// `s` in the window's terms, on top of what `out` holds: the settings a stop and the
+/// command line share, read by their one reader (rc::SettingsFlags).
+void applySettings(const rc::ViewerSettings& s, GuiOptions& out);
+
+/// The options a tour stop stands for: its settings read by rc::stopSettings() (as the
+/// page reads them), on top of `base`'s window, fonts and output choices. On an error, `message` is
 /// `file:line:column: stop K: ...` and nothing is returned.
 std::optional<GuiOptions> stopOptions(const rc::Tour& tour, int stop, const GuiOptions& base, QString& message);
 

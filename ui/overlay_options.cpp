@@ -1,24 +1,19 @@
 #include "overlay_options.h"
 
 #include "view/overlay_registry.h"
+#include "view/viewer_settings.h"
 
 namespace rcgui {
 
 QString toString(Heatmap h) {
-    switch (h) {
-        case Heatmap::None: return "none";
-        case Heatmap::Tests: return "tests";
-        case Heatmap::HitMiss: return "hitmiss";
-        case Heatmap::HitRate: return "hitrate";
-        case Heatmap::VisitOrder: return "order";
-        case Heatmap::BeamNode: return "beam";
-    }
-    return "none";
+    // The core's names (rc::heatmapNames), in the enum's order
+    return QString::fromStdString(rc::heatmapNames().at(std::size_t(h)));
 }
 
 std::optional<Heatmap> parseHeatmap(const QString& s) {
-    for (Heatmap h : {Heatmap::None, Heatmap::Tests, Heatmap::HitMiss, Heatmap::HitRate, Heatmap::VisitOrder, Heatmap::BeamNode})
-        if (toString(h) == s.trimmed().toLower()) return h;
+    const auto& names = rc::heatmapNames();
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (QString::fromStdString(names[i]) == s.trimmed().toLower()) return Heatmap(i);
     return std::nullopt;
 }
 

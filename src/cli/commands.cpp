@@ -1,5 +1,5 @@
 #include "cli/commands.h"
-#include "cli/flag_definitions.h"
+#include "view/flag_definitions.h"
 #include "cli/image_hash.h"
 
 #include <cerrno>
@@ -70,7 +70,7 @@ const CLI::Validator& outputFile() {
 
 void RenderFlags::addTo(CLI::App* c, bool cacheAndOrder) {
     RenderFlags& f = *this;
-    // The options the GUI shares (cli/flag_definitions.h)
+    // The options the GUI shares (view/flag_definitions.h)
     if (cacheAndOrder) {
         addCacheOption(c, f.cache)->capture_default_str();
         addOrderOption(c, f.order)->capture_default_str();

@@ -12,6 +12,7 @@
 #include "view/claim.h"
 #include "view/overlay_layers.h"
 #include "view/session_state.h"
+#include "view/viewer_settings.h"
 
 namespace rc {
 
@@ -26,11 +27,8 @@ std::string TourStop::value(const std::string& key, const std::string& otherwise
 }
 
 const std::vector<std::string>& tourSettingNames() {
-    static const std::vector<std::string> names = {
-        "scene", "cache", "order", "accel", "band", "width", "height", "steps", "select", "overlays", "heatmap",
-        "scene-view", "orbit", "zoom", "focus", "compare", "miss-reason", "spp", "light-radius",
-        "shadow-samples", "gloss", "gloss-samples", "seed", "panels", "run"};
-    return names;
+    // The viewer's settings, as their one reader declares them (rc::SettingsFlags)
+    return settingNames();
 }
 
 namespace {
@@ -271,36 +269,6 @@ std::string stopScene(const Tour& tour, const TourStop& stop) {
     return spec;
 }
 
-namespace {
-
-/// A whole number setting of `stop`, or `otherwise`.
-int intValue(const TourStop& stop, const std::string& key, int otherwise) {
-    const std::string v = stop.value(key);
-    if (v.empty()) return otherwise;
-    try {
-        return std::stoi(v);
-    } catch (const std::exception&) {
-        return otherwise;
-    }
-}
-
-/// Comma-separated whole numbers.
-std::vector<int> numbersOf(const std::string& s, char sep = ',') {
-    std::vector<int> out;
-    std::stringstream in(s);
-    std::string item;
-    while (std::getline(in, item, sep)) {
-        try {
-            out.push_back(std::stoi(item));
-        } catch (const std::exception&) {
-            return {};
-        }
-    }
-    return out;
-}
-
-}  // namespace
-
 void checkStop(const Tour& tour, int k) {
     const TourStop& st = tour.stops.at(std::size_t(k - 1));
     const std::string which = "stop " + std::to_string(k) + " (" + st.title + "): ";
@@ -318,40 +286,33 @@ void checkStop(const Tour& tour, int k) {
     } catch (const std::exception& e) {
         failAt("scene", e.what());
     }
+    // The stop's settings, read as the viewer reads them (rc::stopSettings: names and limits)
+    const ViewerSettings v = stopSettings(tour, k);
     // The image's size, as the viewer takes it: the stop's, else the scene's own
-    const int w = intValue(st, "width", scene->camera.width);
-    const int h = intValue(st, "height", scene->camera.height);
+    const int w = v.width > 0 ? v.width : scene->camera.width;
+    const int h = v.height > 0 ? v.height : scene->camera.height;
     // The focus rectangle and the selected pixel lie in the image
-    if (const std::string f = st.value("focus"); !f.empty()) {
-        const std::vector<int> r = numbersOf(f);
-        if (r.size() != 4 || r[0] < 0 || r[1] < 0 || r[2] > w || r[3] > h || r[0] >= r[2] || r[1] >= r[3])
-            failAt("focus", "'" + f + "' is not a rectangle x0,y0,x1,y1 inside the " + std::to_string(w) + "x" +
-                                std::to_string(h) + " image");
-    }
-    const std::string sel = st.value("select");
-    if (!sel.empty()) {
-        const auto colon = sel.find(':');
-        const std::vector<int> xy = numbersOf(sel.substr(0, colon));
-        if (xy.size() != 2 || xy[0] < 0 || xy[1] < 0 || xy[0] >= w || xy[1] >= h)
-            failAt("select", "pixel '" + sel.substr(0, colon) + "' lies outside the " + std::to_string(w) + "x" +
-                                 std::to_string(h) + " image");
+    if (const auto& r = v.focus; r && ((*r)[2] > w || (*r)[3] > h))
+        failAt("focus", "'" + st.value("focus") + "' is not a rectangle x0,y0,x1,y1 inside the " + std::to_string(w) + "x" +
+                            std::to_string(h) + " image");
+    if (v.select) {
+        const StopSelect& sel = *v.select;
+        if (sel.x >= w || sel.y >= h)
+            failAt("select", "pixel '" + std::to_string(sel.x) + "," + std::to_string(sel.y) + "' lies outside the " +
+                                 std::to_string(w) + "x" + std::to_string(h) + " image");
         // The path is a ray of that pixel: its scanline traced as the stop traces it
-        if (colon != std::string::npos) {
+        if (!sel.path.empty()) {
             RenderOptions ro;
             ro.width = w;
             ro.height = h;
-            ro.rowBegin = xy[1];
-            ro.rowEnd = xy[1] + 1;
-            ro.shading.sampling.spp = intValue(st, "spp", 1);
-            ro.shading.sampling.shadowSamples = intValue(st, "shadow-samples", ro.shading.sampling.shadowSamples);
-            ro.shading.sampling.glossSamples = intValue(st, "gloss-samples", ro.shading.sampling.glossSamples);
-            if (const std::string r = st.value("light-radius"); !r.empty()) ro.shading.sampling.lightRadius = std::atof(r.c_str());
-            if (const std::string g = st.value("gloss"); !g.empty()) ro.shading.sampling.glossDegrees = std::atof(g.c_str());
+            ro.rowBegin = sel.y;
+            ro.rowEnd = sel.y + 1;
+            ro.shading.sampling = v.sampling;
             try {
                 SessionState s({scene, ro});
                 s.runUntil(RunGoal::ToEnd, 0);
                 std::string why;
-                if (eventAtPath(s, xy[1] * w + xy[0], sel.substr(colon + 1), why) < 0) failAt("select", why);
+                if (eventAtPath(s, sel.y * w + sel.x, sel.path, why) < 0) failAt("select", why);
             } catch (const TourError&) {
                 throw;
             } catch (const std::exception& e) {

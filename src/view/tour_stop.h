@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// \brief A tour stop applied: its settings read once into what a viewer sets (the render's
-/// choices, the overlays, the view), and its rays (steps, the run to the miss it shows, its
-/// selection) applied to a render. The web page reads stops through this (its bindings);
-/// RayCache's own addition, not the paper's.
+/// \brief A tour stop applied: its settings, read by the one reader of the viewer's settings
+/// (view/viewer_settings.h, which the Qt window reads its stops with too), planned as the
+/// page sets them (the render's choices, the overlays, the view), and its rays (steps, the
+/// run to the miss it shows, its selection) applied to a render. The web page reads stops
+/// through this (its bindings); RayCache's own addition, not the paper's.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -12,17 +13,12 @@
 #include "view/ray_focus.h"
 #include "view/session_state.h"
 #include "view/tour.h"
+#include "view/viewer_settings.h"
 
 namespace rc {
 
-/// A stop's `select`: a pixel and, optionally, the ray-tree path of its ray to focus.
-struct StopSelect {
-    int x = 0, y = 0;
-    std::string path;  ///< "" for the pixel's eye ray
-};
-
-/// Stop `k` of a tour as a viewer applies it. Empty strings and zeros are settings the
-/// stop leaves to the viewer's defaults.
+/// Stop `k` of a tour as the page applies it: its ViewerSettings (stopSettings()) in the
+/// page's terms. Empty strings and zeros are settings the stop leaves to the viewer's defaults.
 struct StopPlan {
     std::string scene;  ///< resolved against the tour's folder (rc::stopScene)
     int width = 0, height = 0;  ///< 0: the scene's own
@@ -32,7 +28,7 @@ struct StopPlan {
     std::vector<std::string> overlays;       ///< the overlays' names (rc::overlayNamed), "all" expanded
     std::string heatmap;                     ///< "" for none, e.g. tests
     std::int64_t steps = 0;                  ///< rays traced first
-    std::string run;                         ///< "" or next-miss (the Qt GUI knows more)
+    std::string run;                         ///< "", next-miss or next-deferral (the page runs to a miss only)
     std::string missReason;                  ///< the miss next-miss stops at ("" for any)
     std::optional<StopSelect> select;
     std::optional<std::vector<double>> focus;  ///< the image rectangle shown: x0, y0, x1, y1
@@ -45,7 +41,8 @@ struct StopPlan {
     bool has(const std::string& overlay) const;
 };
 
-/// Reads stop `k` (from 1) of `tour`. \throws TourError when it has no such stop.
+/// Reads stop `k` (from 1) of `tour` (stopSettings()). \throws TourError when it has no
+/// such stop or a setting is wrong, as the Qt window reports it.
 StopPlan planOf(const Tour& tour, int k);
 
 /// What applying a stop's rays gave: the selection to show, and what could not be met.

@@ -1,11 +1,11 @@
 // The GUI's command line: CLI11, with the options it shares with the CLI defined once
-// (cli/flag_definitions.h) and so the CLI's limits; a bad flag is one line and exit 2.
+// (view/flag_definitions.h) and so the CLI's limits; a bad flag is one line and exit 2.
 #include <catch2/catch.hpp>
 
 #include <QProcess>
 #include <QStringList>
 
-#include "cli/flag_definitions.h"
+#include "view/flag_definitions.h"
 #include "gui_options.h"
 #include "scene/nff_reader.h"
 

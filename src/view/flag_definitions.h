@@ -3,7 +3,8 @@
 /// \brief The command-line options `raycache` and `raycache-gui` share, defined once: the
 /// render's cache, order, complete search, size, band and distributed ray tracing's
 /// samples, with the same names, help and limits (NffLimits::maxResolution, kMaxSpp, ...).
-/// Header-only, so that the GUI uses them without the CLI's objects.
+/// Header-only, in the viewer's layer: the GUI's command line and the tours read the same
+/// options through view/viewer_settings.h.
 #include <cmath>
 #include <cstdlib>
 #include <string>
