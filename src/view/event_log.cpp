@@ -1,6 +1,8 @@
 #include "view/event_log.h"
 
 #include <cstring>
+#include <iterator>
+#include <stdexcept>
 
 namespace rc {
 
@@ -50,7 +52,19 @@ const EventRecord kStart{};
 
 }  // namespace
 
-void EventLog::push_back(const EventRecord& r) {
+void EventLog::dropRays() {
+    if (size_ != 0) throw std::logic_error("EventLog::dropRays: the log already holds events");
+    dropRays_ = true;
+}
+
+void EventLog::push_back(const EventRecord& given) {
+    // Without its ray, the event reads back as it is stored: o and d zero (so every event's
+    // origin is the one before it, and costs nothing)
+    EventRecord r = given;
+    if (dropRays_) {
+        std::fill(std::begin(r.o), std::end(r.o), 0.0f);
+        r.d[0] = r.d[1] = 0;
+    }
     // [encode]
     // Against the event before it in its group: the first of a group against nothing
     const bool first = size_ % kGroup == 0;
@@ -85,7 +99,7 @@ void EventLog::push_back(const EventRecord& r) {
         putSigned(p, r.previous);
     }
     if (!sameOrigin) putRaw(p, r.o);
-    putRaw(p, r.d);
+    if (!dropRays_) putRaw(p, r.d);
     if (!noT) putRaw(p, r.t);
     // [encode]
     const std::size_t n = std::size_t(p - buf);
@@ -129,7 +143,8 @@ std::uint64_t EventLog::decode(std::uint64_t pos, std::size_t index, const Event
     r.previous = back == 0 ? -1 : back == 1 ? std::int32_t(getSigned(p)) : std::int32_t(std::int64_t(index) - std::int64_t(back) + 1);
     if (sameOrigin) std::memcpy(r.o, b.o, sizeof r.o);
     else getRaw(p, r.o);
-    getRaw(p, r.d);
+    if (dropRays_) r.d[0] = r.d[1] = 0;
+    else getRaw(p, r.d);
     if (h1 & kNoT) r.t = kNone;
     else getRaw(p, r.t);
     return pos + std::uint64_t(p - start);

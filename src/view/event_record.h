@@ -40,6 +40,8 @@ struct EventRecord {
 
     /// Copies what the GUI needs from `e`.
     static EventRecord from(const rc::TraceEvent& e, int region, int previous);
+    /// Sets o and d from `ray`, as from() does.
+    void setRay(const rc::Ray& ray);
 };
 
 }  // namespace rc
