@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <limits>
 #include <memory>
 
 #include "scene/builtin_scenes.h"
@@ -72,10 +73,10 @@ TEST_CASE("A path its pixel's rays never take is no ray", "[view][event]") {
     o.width = o.height = 16;
     const auto state = run("trio", o, false);
     const rc::SessionState& s = *state;
-    REQUIRE_FALSE(rc::impliedTask(s.session(), -1, 0));
-    REQUIRE_FALSE(rc::impliedTask(s.session(), 16 * 16, 0));
-    REQUIRE_FALSE(rc::impliedTask(s.session(), 0, s.session().cacheTree().size()));
-    REQUIRE(rc::impliedTask(s.session(), 0, 0));
+    REQUIRE_FALSE(rc::impliedRay(s.session(), -1, 0));
+    REQUIRE_FALSE(rc::impliedRay(s.session(), 16 * 16, 0));
+    REQUIRE_FALSE(rc::impliedRay(s.session(), 0, s.session().cacheTree().size()));
+    REQUIRE(rc::impliedRay(s.session(), 0, 0));
     // A pixel whose eye ray hits nothing spawns nothing: no path below its eye ray
     int empty = -1;
     for (int px = 0; px < 16 * 16 && empty < 0; ++px)
@@ -84,6 +85,34 @@ TEST_CASE("A path its pixel's rays never take is no ray", "[view][event]") {
     REQUIRE(s.session().cacheTree().size() > 1);
     for (int n = 1; n < s.session().cacheTree().size(); ++n) {
         REQUIRE(s.recorder().eventAt(empty, n) == -1);
-        REQUIRE_FALSE(rc::impliedTask(s.session(), empty, n));
+        REQUIRE_FALSE(rc::impliedRay(s.session(), empty, n));
     }
+}
+
+TEST_CASE("The page's records of a render take at most kRecordBytes a pixel", "[view][event][memory]") {
+    // The page's render (web/raycache_web.cpp): one checkpoint, rays left out of the log.
+    // Its memory is the render's (what raycache render holds) plus these records, counted
+    // here from what they allocate: the event log and miss index, the per-pixel tallies
+    // and the checkpoints, on the render tests/web/page_memory.py measures (cube:4,
+    // blocker+, breadth-first) at a smaller size. The bound is what they take with rays
+    // left out and 32-bit tallies, with a little room; a log that kept every ray would take
+    // about half as much again. (page_memory.py --limit 3, the whole page against the CLI,
+    // is not met yet: see docs/pages/gui.md, "What recording costs".)
+    constexpr double kRecordBytes = 66.0;
+    rc::RenderOptions o;
+    o.width = o.height = 384;
+    o.cache = rc::CacheKind::BlockerPlus;
+    o.order = rc::OrderKind::BreadthFirst;
+    rc::SessionConfig c{std::make_shared<const rc::Scene>(rc::makeBuiltin("cube:4")), o};
+    c.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
+    rc::SessionState s(std::move(c));
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    const rc::TraceRecorder& rec = s.recorder();
+    const double pixels = double(s.width()) * s.height();
+    const double events = double(rec.events().size()), bytes = double(rec.eventBytes() + rec.pixelBytes() + s.checkpoints().bytes());
+    WARN("records: " << bytes / pixels << " bytes a pixel (" << double(rec.eventBytes()) / events << " an event, "
+                     << events / pixels << " events a pixel; tallies " << double(rec.pixelBytes()) / pixels << ")");
+    REQUIRE(rec.events().raysDropped());
+    REQUIRE(events / pixels > 2.5);  // the render's rays: a shadow and a reflection ray for most eye rays
+    REQUIRE(bytes / pixels <= kRecordBytes);
 }

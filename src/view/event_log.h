@@ -25,9 +25,9 @@ public:
     /// Events a group holds: what a random read decodes at most.
     static constexpr std::size_t kGroup = 16;
 
-    /// Keep no ray (EventRecord::o and d) from now on: each event reads back with o and d
-    /// zero, and its ray is traced again when asked (rc::impliedTask, RecordedRay). Set
-    /// while empty (a log keeps its rays or not from the start).
+    /// Keep no ray from now on: each event reads back with o and d zero, and t -1 but a
+    /// shadow ray's; its ray is traced again when asked (rc::impliedRay,
+    /// SessionState::event). Set while empty (a log keeps its rays or not from the start).
     void dropRays();
     /// Are the rays left out (dropRays())?
     bool raysDropped() const { return dropRays_; }

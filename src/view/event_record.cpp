@@ -37,6 +37,10 @@ void EventRecord::setRay(const rc::Ray& ray) {
     d[1] = quantise(y);
 }
 
+void EventRecord::setDistance(bool known, const rc::Answer& a) {
+    t = known && std::isfinite(a.t) ? float(a.t) : -1.0f;
+}
+
 EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous) {
     EventRecord r;
     const rc::Query& q = e.task.query;
@@ -54,7 +58,8 @@ EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous)
     r.flags = std::uint8_t((e.deferred ? Deferred : 0) | (e.lookup.searched ? Searched : 0) |
                            (q.origin.inside ? Inside : 0));
     r.setRay(q.ray);
-    r.t = e.lookup.known && std::isfinite(e.lookup.answer().t) ? float(e.lookup.answer().t) : -1.0f;
+    if (e.lookup.known) r.setDistance(true, e.lookup.answer());
+    else r.setDistance(false, {});
     return r;
 }
 

@@ -2,7 +2,6 @@
 
 #include <vector>
 
-#include "search/accelerator.h"
 #include "trace/distributed_sampling.h"
 #include "trace/image_accumulator.h"
 #include "trace/shading.h"
@@ -11,7 +10,7 @@ namespace rc {
 
 bool raysImplied(const rc::RenderSession& session) { return session.options().accel != rc::AccelKind::Embree; }
 
-std::optional<rc::RayTask> impliedTask(const rc::RenderSession& session, int pixel, int node) {
+std::optional<ImpliedRay> impliedRay(const rc::RenderSession& session, int pixel, int node) {
     const rc::CacheTree& tree = session.cacheTree();
     if (pixel < 0 || pixel >= session.width() * session.height() || node < 0 || node >= tree.size()) return std::nullopt;
     // [implied-ray]
@@ -25,14 +24,14 @@ std::optional<rc::RayTask> impliedTask(const rc::RenderSession& session, int pix
                                        rc::eyeKey(sampling.seed, pixel, sample), sampling.spp > 1 ? 1.0 / sampling.spp : 1.0);
     // Down the path: answer the ray, shade it, follow the child the path names (the cache
     // tree's child() keys a child path on the same three)
-    const auto search = rc::makeCompleteSearch(o.accel, session.scene());
+    const rc::CompleteSearch& search = session.completeSearch();
     rc::Counters scratch;
     rc::ImageAccumulator image(session.width(), session.height(), pixel / session.width(), pixel / session.width() + 1);
     std::vector<rc::RayTask> children;
     for (std::size_t k = path.size() - 1; k-- > 0;) {
         const rc::CacheTree::Node& step = tree.node(path[k]);
         children.clear();
-        rc::shade(session.scene(), task, search->nearest(task.query, scratch), o.shading, image, children);
+        rc::shade(session.scene(), task, search.nearest(task.query, scratch), o.shading, image, children);
         const rc::RayTask* next = nullptr;
         for (const rc::RayTask& c : children)
             if (c.query.kind == step.kind && c.query.light == step.light && c.sample == step.sample) next = &c;
@@ -41,7 +40,8 @@ std::optional<rc::RayTask> impliedTask(const rc::RenderSession& session, int pix
     }
     // [implied-ray]
     task.node = node;
-    return task;
+    const rc::Answer nearest = search.nearest(task.query, scratch);
+    return ImpliedRay{task, nearest};
 }
 
 }  // namespace rc

@@ -15,11 +15,19 @@ namespace rc {
 /// complete search is Embree's, whose single precision another search may not reproduce.
 bool raysImplied(const rc::RenderSession& session);
 
+/// A ray traced again, and its nearest hit.
+struct ImpliedRay {
+    rc::RayTask task;
+    rc::Answer nearest;  ///< the render's complete search's answer
+};
+
 /// The task (query, key, sample) that `session`'s render traces for `pixel` at ray-tree
 /// path `node`, made again: the eye ray of the path's pixel sample, then down the path,
-/// each ray answered by a complete search and shaded for its children (as SampleFan does
-/// for the whole tree). Nothing when the pixel's rays at the path were never made (a node
-/// the tree does not have, or a child its parent's answer does not spawn).
-std::optional<rc::RayTask> impliedTask(const rc::RenderSession& session, int pixel, int node);
+/// each ray answered by the render's complete search and shaded for its children (as
+/// SampleFan does for the whole tree). Nothing when the pixel's rays at the path were
+/// never made (a node the tree does not have, or a child its parent's answer does not
+/// spawn). Its nearest hit is every answer's but a shadow ray's, which a cache may answer
+/// with any object in the way.
+std::optional<ImpliedRay> impliedRay(const rc::RenderSession& session, int pixel, int node);
 
 }  // namespace rc

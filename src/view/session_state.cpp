@@ -42,7 +42,12 @@ const SampleFan& SessionState::fan(int pixel) const {
 EventRecord SessionState::event(std::size_t i) const {
     EventRecord r = recorder_.events()[i];
     if (recorder_.events().raysDropped())
-        if (const auto task = impliedTask(*session_, r.pixel, r.node)) r.setRay(task->query.ray);
+        if (const auto ray = impliedRay(*session_, r.pixel, r.node)) {
+            r.setRay(ray->task.query.ray);
+            // The log keeps a shadow ray's hit distance only: a cache may answer one with
+            // any object in the way; every other ray's answer is its nearest hit
+            if (r.rayKind() != rc::RayKind::Shadow) r.setDistance(!r.deferred(), ray->nearest);
+        }
     return r;
 }
 

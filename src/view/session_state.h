@@ -70,7 +70,7 @@ public:
     const rc::RenderSession& session() const { return *session_; }
     const TraceRecorder& recorder() const { return recorder_; }
     /// Recorded event `i` (< recorder().events().size()) with its ray: the log's, or, when
-    /// the log keeps none, its pixel's ray at its path traced again (rc::impliedTask).
+    /// the log keeps none, its pixel's ray at its path traced again (rc::impliedRay).
     EventRecord event(std::size_t i) const;
     /// The beam tree's builder, fed from the recorder's events when asked (only the events
     /// added since the last ask): a page that never asks keeps no second copy of its rays.
