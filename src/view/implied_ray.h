@@ -12,7 +12,8 @@ namespace rc {
 /// alone? A ray's origin and direction are a pure function of the scene, the options and
 /// the answers of the rays above it on its path (eye, reflection and refraction rays,
 /// whose answers are the nearest hit whatever the cache), so they can, unless the render's
-/// complete search is Embree's, whose single precision another search may not reproduce.
+/// complete search is Embree's: its single-precision nearest hit may differ from the answer
+/// a cache gives in double precision, and the rays below it with it.
 bool raysImplied(const rc::RenderSession& session);
 
 /// A ray traced again, and its nearest hit.
