@@ -165,6 +165,28 @@ TEST_CASE("The fill's region layer marks the region being filled, and nothing wi
     REQUIRE(std::count(none.begin(), none.end(), std::uint8_t(0)) == 48 * 48);
 }
 
+TEST_CASE("The page's layers, read straight from the log, equal those drawn from a PathIndex", "[view]") {
+    // The page builds no PathIndex (an entry a pixel); the Qt window draws from one
+    rc::SessionState bfs = session("cube:3", rc::CacheKind::Blocker, 48, rc::OrderKind::BreadthFirst);
+    int compared = 0;
+    for (std::int64_t step : {300, 800, 2500, 6000}) {
+        REQUIRE(bfs.runUntil(rc::RunGoal::ToStep, step));
+        const rc::FrontierView f = bfs.session().order().frontier();
+        if (f.path >= 0) {
+            rc::PathIndex index;
+            index.update(bfs.recorder(), bfs.serial(), f.path);
+            REQUIRE(rc::regionLayer(bfs) == rc::regionLayer(index, 48, 48, f.region));
+            ++compared;
+        }
+        for (int node : {0, 1, 2, 3}) {
+            rc::PathIndex index;
+            index.update(bfs.recorder(), bfs.serial(), node);
+            REQUIRE(rc::missLayer(bfs, node) == rc::missLayer(index));
+        }
+    }
+    REQUIRE(compared >= 3);
+}
+
 TEST_CASE("A ray chosen by pixel and path, the caption of the ray in focus, and the showcase ray", "[view]") {
     rc::SessionState s = session("trio", rc::CacheKind::Blocker, 64);
     REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));

@@ -252,31 +252,34 @@ public:
     }
     int selectedPixel() const { return selection_.pixel; }
 
-    /// The 8-bit RGB image, rows top to bottom (a view into memory the next call may move).
+    /// The 8-bit RGB image, rows top to bottom, for its hash once the render is complete:
+    /// written over the picture's memory (a view into memory the next call overwrites), so
+    /// the page keeps one image-sized buffer between frames, not two.
     val image() {
-        rgb_ = state_->session().image().rgb8();
-        return val(emscripten::typed_memory_view(rgb_.size(), rgb_.data()));
+        const std::size_t n = std::size_t(width()) * std::size_t(height());
+        frame_.resize(n * 4);
+        state_->session().image().rgb8Into(frame_.data(), 3);
+        return val(emscripten::typed_memory_view(n * 3, frame_.data()));
     }
     /// The top of this render's tests heatmap (rc::testsTop); two renders side by side
     /// share the larger.
     double heatTop() const { return testsTop(state_->recorder()); }
 
     /// The picture the page draws at image size, 8-bit RGBA (a view into memory the next
-    /// call may move): the image, or the tests heatmap up to `top` (rc::testsHeatmapRgba);
+    /// call overwrites): the image, or the tests heatmap up to `top` (rc::testsHeatmapRgba);
     /// then the fill's regions (rc::regionLayer: the one being filled tinted, finished ones
     /// edged) and the misses at the path in focus (rc::missLayer), by reason.
     val picture(bool heatmap, double top, bool misses, bool regions) {
-        const int n = width() * height();
+        const std::size_t n = std::size_t(width()) * std::size_t(height());
         if (heatmap) {
-            rgba_ = testsHeatmapRgba(state_->recorder(), top);
+            frame_ = testsHeatmapRgba(state_->recorder(), top);
         } else {
-            const std::vector<std::uint8_t> rgb = state_->session().image().rgb8();
-            rgba_.assign(std::size_t(n) * 4, 255);
-            for (int i = 0; i < n; ++i)
-                for (int k = 0; k < 3; ++k) rgba_[std::size_t(i) * 4 + k] = rgb[std::size_t(i) * 3 + k];
+            // Straight from the render's sums into the picture, with no RGB copy between
+            frame_.assign(n * 4, 255);
+            state_->session().image().rgb8Into(frame_.data(), 4);
         }
         const auto blend = [this](std::size_t i, Rgb c, double a) {
-            std::uint8_t* d = &rgba_[i * 4];
+            std::uint8_t* d = &frame_[i * 4];
             const std::uint8_t to[3] = {c.r, c.g, c.b};
             for (int k = 0; k < 3; ++k) d[k] = std::uint8_t(std::lround(d[k] + (to[k] - d[k]) * a));
         };
@@ -293,7 +296,7 @@ public:
             for (std::size_t i = 0; i < m.size(); ++i)
                 if (m[i]) blend(i, missReasonColour(MissReason(m[i])), 1.0);
         }
-        return val(emscripten::typed_memory_view(rgba_.size(), rgba_.data()));
+        return val(emscripten::typed_memory_view(frame_.size(), frame_.data()));
     }
 
     /// Applies stop `stop` of tour `tour` (under /tours) to this render, freshly opened with
@@ -485,7 +488,7 @@ private:
     std::unique_ptr<SessionState> state_;
     std::unique_ptr<ImageProjector> projector_;
     Selection selection_;
-    std::vector<std::uint8_t> rgb_, rgba_;
+    std::vector<std::uint8_t> frame_;  ///< picture() and image() write here: one buffer
     std::string error_;
     std::vector<OverlayShape> drawn_;  ///< the shapes the last shapes() gave
 };

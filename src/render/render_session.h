@@ -84,6 +84,8 @@ public:
     int width() const { return options_.width; }
     int height() const { return options_.height; }
     const Counters& counters() const { return counters_; }
+    /// What answers its complete searches.
+    const CompleteSearch& completeSearch() const { return *search_; }
     const ImageAccumulator& image() const { return image_; }
     /// Hands the image over (the session's is left empty): no copy of a finished render.
     ImageAccumulator takeImage() { return std::move(image_); }

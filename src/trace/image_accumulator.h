@@ -51,6 +51,9 @@ public:
     }
     /// The 8-bit RGB image, clamped to [0, 1].
     std::vector<std::uint8_t> rgb8() const;
+    /// The same bytes written in place: pixel p's at out[p * stride], out[p * stride + 1]
+    /// and out[p * stride + 2] (stride 4: into an RGBA picture, its alpha left alone).
+    void rgb8Into(std::uint8_t* out, std::size_t stride) const;
     int width() const { return width_; }
     int height() const { return height_; }
     /// The fixed-point sums of the rows held, 3 per pixel, row after row: what a
@@ -92,12 +95,16 @@ inline std::uint8_t toByte(double v) {
     return std::uint8_t(std::floor(c * 255.0 + 0.5));
 }
 
-inline std::vector<std::uint8_t> ImageAccumulator::rgb8() const {
-    std::vector<std::uint8_t> out(std::size_t(width_) * height_ * 3);
+inline void ImageAccumulator::rgb8Into(std::uint8_t* out, std::size_t stride) const {
     for (int p = 0; p < width_ * height_; ++p) {
         const Vec3 v = value(p);
-        for (int k = 0; k < 3; ++k) out[std::size_t(p) * 3 + k] = toByte(v[k]);
+        for (int k = 0; k < 3; ++k) out[std::size_t(p) * stride + std::size_t(k)] = toByte(v[k]);
     }
+}
+
+inline std::vector<std::uint8_t> ImageAccumulator::rgb8() const {
+    std::vector<std::uint8_t> out(std::size_t(width_) * height_ * 3);
+    rgb8Into(out.data(), 3);
     return out;
 }
 

@@ -1,6 +1,8 @@
 #include "view/event_log.h"
 
 #include <cstring>
+#include <iterator>
+#include <stdexcept>
 
 namespace rc {
 
@@ -46,11 +48,30 @@ void getRaw(const std::uint8_t*& p, T& v) {
 enum : std::uint8_t { kSameOrigin = 0x80, kNoT = 0x08, kRegionChanged = 0x10, kRawHeader = 0x80 };
 enum : std::uint8_t { kStepSame = 0, kStepNext = 1, kStepCoded = 2 };
 constexpr float kNone = -1.0f;
+// How far back the previous event of event `index` is: 0 for none, 1 for one that is not
+// before it (kept as it is), else index - previous + 1
+std::int64_t backOf(std::int32_t previous, std::int64_t index) {
+    if (previous == -1) return 0;
+    return previous >= 0 && previous < index ? index - previous + 1 : 1;
+}
 const EventRecord kStart{};
 
 }  // namespace
 
-void EventLog::push_back(const EventRecord& r) {
+void EventLog::dropRays() {
+    if (size_ != 0) throw std::logic_error("EventLog::dropRays: the log already holds events");
+    dropRays_ = true;
+}
+
+void EventLog::push_back(const EventRecord& given) {
+    // Without its ray, the event reads back as it is stored: o and d zero (so every event's
+    // origin is the one before it, and costs nothing), and t none but a shadow ray's
+    EventRecord r = given;
+    if (dropRays_) {
+        std::fill(std::begin(r.o), std::end(r.o), 0.0f);
+        r.d[0] = r.d[1] = 0;
+        if (r.rayKind() != rc::RayKind::Shadow) r.t = kNone;
+    }
     // [encode]
     // Against the event before it in its group: the first of a group against nothing
     const bool first = size_ % kGroup == 0;
@@ -73,19 +94,18 @@ void EventLog::push_back(const EventRecord& r) {
     if (stepCode == kStepCoded) putSigned(p, step);
     putSigned(p, std::int64_t(r.pixel) - b.pixel);
     putSigned(p, std::int64_t(r.node) - b.node);
-    putSigned(p, r.hit);
-    putSigned(p, r.origin);
+    // Neighbouring rays mostly hit and leave the same objects: both against the one before
+    putSigned(p, std::int64_t(r.hit) - b.hit);
+    putSigned(p, std::int64_t(r.origin) - b.origin);
     putSigned(p, r.tests);
     if (r.region != b.region) putSigned(p, std::int64_t(r.region) - b.region);
-    // The pixel's previous event, as how far back it is: 0 none, 1 coded as it is
-    if (r.previous == -1) putVarint(p, 0);
-    else if (r.previous >= 0 && r.previous < index) putVarint(p, std::uint64_t(index - r.previous + 1));
-    else {
-        putVarint(p, 1);
-        putSigned(p, r.previous);
-    }
+    // The pixel's previous event, as how far back it is (0 none, 1 coded as it is), against
+    // the same of the event before: a fill's neighbouring rays look about as far back
+    const std::int64_t back = backOf(r.previous, index);
+    putSigned(p, back - (first ? 0 : backOf(b.previous, index - 1)));
+    if (back == 1) putSigned(p, r.previous);
     if (!sameOrigin) putRaw(p, r.o);
-    putRaw(p, r.d);
+    if (!dropRays_) putRaw(p, r.d);
     if (!noT) putRaw(p, r.t);
     // [encode]
     const std::size_t n = std::size_t(p - buf);
@@ -121,15 +141,17 @@ std::uint64_t EventLog::decode(std::uint64_t pos, std::size_t index, const Event
     r.step = std::int32_t(b.step + (stepCode == kStepSame ? 0 : stepCode == kStepNext ? 1 : getSigned(p)));
     r.pixel = std::int32_t(b.pixel + getSigned(p));
     r.node = std::int32_t(b.node + getSigned(p));
-    r.hit = std::int32_t(getSigned(p));
-    r.origin = std::int32_t(getSigned(p));
+    r.hit = std::int32_t(b.hit + getSigned(p));
+    r.origin = std::int32_t(b.origin + getSigned(p));
     r.tests = std::int32_t(getSigned(p));
     r.region = h1 & kRegionChanged ? std::int32_t(b.region + getSigned(p)) : b.region;
-    const std::uint64_t back = getVarint(p);
-    r.previous = back == 0 ? -1 : back == 1 ? std::int32_t(getSigned(p)) : std::int32_t(std::int64_t(index) - std::int64_t(back) + 1);
+    const bool first = index % kGroup == 0;
+    const std::int64_t back = (first ? 0 : backOf(b.previous, std::int64_t(index) - 1)) + getSigned(p);
+    r.previous = back == 0 ? -1 : back == 1 ? std::int32_t(getSigned(p)) : std::int32_t(std::int64_t(index) - back + 1);
     if (sameOrigin) std::memcpy(r.o, b.o, sizeof r.o);
     else getRaw(p, r.o);
-    getRaw(p, r.d);
+    if (dropRays_) r.d[0] = r.d[1] = 0;
+    else getRaw(p, r.d);
     if (h1 & kNoT) r.t = kNone;
     else getRaw(p, r.t);
     return pos + std::uint64_t(p - start);

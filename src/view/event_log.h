@@ -25,6 +25,13 @@ public:
     /// Events a group holds: what a random read decodes at most.
     static constexpr std::size_t kGroup = 16;
 
+    /// Keep no ray from now on: each event reads back with o and d zero, and t -1 but a
+    /// shadow ray's; its ray is traced again when asked (rc::impliedRay,
+    /// SessionState::event). Set while empty (a log keeps its rays or not from the start).
+    void dropRays();
+    /// Are the rays left out (dropRays())?
+    bool raysDropped() const { return dropRays_; }
+
     void push_back(const EventRecord& r);
     /// Event `i` (< size()), decoded.
     EventRecord operator[](std::size_t i) const;
@@ -88,6 +95,7 @@ private:
     BlockVector<std::uint64_t, 4096> groups_;  ///< where each group starts (chunk * kChunk + offset)
     std::size_t size_ = 0;
     EventRecord last_;  ///< what the next event is coded against: the last one appended, unless it starts a group
+    bool dropRays_ = false;
 };
 
 }  // namespace rc

@@ -23,6 +23,24 @@ rc::Vec3 EventRecord::rayDirection() const {
     return v / std::sqrt(double(x) * x + double(y) * y + double(z) * z);
 }
 
+void EventRecord::setRay(const rc::Ray& ray) {
+    for (int k = 0; k < 3; ++k) o[k] = float(ray.o[k]);
+    const rc::Vec3& v = ray.d;
+    const double l1 = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+    float x = float(v.x / l1), y = float(v.y / l1);
+    if (v.z < 0.0) {
+        const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
+        x = fx;
+        y = fy;
+    }
+    d[0] = quantise(x);
+    d[1] = quantise(y);
+}
+
+void EventRecord::setDistance(bool known, const rc::Answer& a) {
+    t = known && std::isfinite(a.t) ? float(a.t) : -1.0f;
+}
+
 EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous) {
     EventRecord r;
     const rc::Query& q = e.task.query;
@@ -39,18 +57,9 @@ EventRecord EventRecord::from(const rc::TraceEvent& e, int region, int previous)
     r.reason = std::uint8_t(e.lookup.reason);
     r.flags = std::uint8_t((e.deferred ? Deferred : 0) | (e.lookup.searched ? Searched : 0) |
                            (q.origin.inside ? Inside : 0));
-    for (int k = 0; k < 3; ++k) r.o[k] = float(q.ray.o[k]);
-    const rc::Vec3& v = q.ray.d;
-    const double l1 = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
-    float x = float(v.x / l1), y = float(v.y / l1);
-    if (v.z < 0.0) {
-        const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
-        x = fx;
-        y = fy;
-    }
-    r.d[0] = quantise(x);
-    r.d[1] = quantise(y);
-    r.t = e.lookup.known && std::isfinite(e.lookup.answer().t) ? float(e.lookup.answer().t) : -1.0f;
+    r.setRay(q.ray);
+    if (e.lookup.known) r.setDistance(true, e.lookup.answer());
+    else r.setDistance(false, {});
     return r;
 }
 

@@ -40,6 +40,10 @@ struct EventRecord {
 
     /// Copies what the GUI needs from `e`.
     static EventRecord from(const rc::TraceEvent& e, int region, int previous);
+    /// Sets o and d from `ray`, as from() does.
+    void setRay(const rc::Ray& ray);
+    /// Sets t from a lookup's answer (`known`: whether the lookup gave one), as from() does.
+    void setDistance(bool known, const rc::Answer& a);
 };
 
 }  // namespace rc

@@ -15,38 +15,62 @@ std::vector<std::uint8_t> missLayer(const PathIndex& index) {
     return out;
 }
 
+namespace {
+/// Calls `f(pixel, event)` for each committed event at ray-tree path `node`, oldest first:
+/// the last call for a pixel is its event at the path (as PathIndex keeps it), without
+/// PathIndex's entry of every pixel (a page redrawing an image of millions of pixels).
+template <class F>
+void eachAtPath(const TraceRecorder& rec, int node, F&& f) {
+    for (const EventRecord e : rec.events())
+        if (e.node == node && !e.deferred()) f(std::size_t(e.pixel), e);
+}
+}  // namespace
+
 std::vector<std::uint8_t> missLayer(const SessionState& s, int path) {
-    PathIndex index;
-    index.update(s.recorder(), s.serial(), path);
-    return missLayer(index);
+    std::vector<std::uint8_t> out(std::size_t(s.width()) * std::size_t(s.height()), 0);
+    // What missMark() reads of a PathIndex entry
+    eachAtPath(s.recorder(), path, [&](std::size_t px, const EventRecord& e) {
+        out[px] = e.rayDecision() == Decision::Miss ? e.reason : 0;
+    });
+    return out;
 }
 
-std::vector<std::uint8_t> regionLayer(const PathIndex& index, int width, int height, int current) {
+namespace {
+/// The region marks of a picture of `width` x `height` pixels whose pixel at (x, y) lies
+/// in region `regionAt(x, y)` (-1: none yet) while region `current` is being filled.
+template <class RegionAt>
+std::vector<std::uint8_t> regionMarks(int width, int height, int current, RegionAt&& regionAt) {
     const int w = width, h = height;
     std::vector<std::uint8_t> out(std::size_t(w) * std::size_t(h), 0);
-    auto regionAt = [&](int x, int y) {
-        if (x < 0 || y < 0 || x >= w || y >= h) return -1;
-        const PathIndex::Entry& e = index.at(y * w + x);
-        return e.event < 0 ? -1 : int(e.region);
-    };
+    const auto at = [&](int x, int y) { return x < 0 || y < 0 || x >= w || y >= h ? -1 : regionAt(x, y); };
     // One pass over the pixels, each compared with its right and lower neighbours
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const int r = regionAt(x, y);
+            const int r = at(x, y);
             if (r < 0) continue;
             auto& mark = out[std::size_t(y) * std::size_t(w) + std::size_t(x)];
             if (r == current) mark = std::uint8_t(RegionMark::Current);
-            else if (regionAt(x + 1, y) != r || regionAt(x, y + 1) != r) mark = std::uint8_t(RegionMark::Edge);
+            else if (at(x + 1, y) != r || at(x, y + 1) != r) mark = std::uint8_t(RegionMark::Edge);
         }
     return out;
+}
+}  // namespace
+
+std::vector<std::uint8_t> regionLayer(const PathIndex& index, int width, int height, int current) {
+    return regionMarks(width, height, current, [&](int x, int y) {
+        const PathIndex::Entry& e = index.at(y * width + x);
+        return e.event < 0 ? -1 : int(e.region);
+    });
 }
 
 std::vector<std::uint8_t> regionLayer(const SessionState& s) {
     const FrontierView f = s.session().order().frontier();
-    if (f.path < 0) return std::vector<std::uint8_t>(std::size_t(s.width()) * std::size_t(s.height()), 0);
-    PathIndex index;
-    index.update(s.recorder(), s.serial(), f.path);
-    return regionLayer(index, s.width(), s.height(), f.region);
+    const int w = s.width();
+    if (f.path < 0) return std::vector<std::uint8_t>(std::size_t(w) * std::size_t(s.height()), 0);
+    // Each pixel's region at the path only (what regionMarks reads of a PathIndex entry)
+    std::vector<std::int32_t> region(std::size_t(w) * std::size_t(s.height()), -1);
+    eachAtPath(s.recorder(), f.path, [&](std::size_t px, const EventRecord& e) { region[px] = e.region; });
+    return regionMarks(w, s.height(), f.region, [&](int x, int y) { return int(region[std::size_t(y) * std::size_t(w) + std::size_t(x)]); });
 }
 
 std::vector<std::string> focusCaption(const SessionState& s, const Selection& sel) {

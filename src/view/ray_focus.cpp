@@ -46,7 +46,8 @@ std::optional<RayFocus> RayFocus::ofEvent(const SessionState& s, int index) {
     // The newest event is the one being traced: its full-precision copy, and its entry
     if (std::size_t(index) + 1 == events.size())
         if (auto f = ofCurrent(s)) return f;
-    const EventRecord& r = events[std::size_t(index)];
+    // Its ray traced again when the log keeps none
+    const EventRecord r = s.event(std::size_t(index));
     RayFocus f;
     f.event = index;
     f.decision = r.rayDecision();

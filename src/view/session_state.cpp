@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "view/implied_ray.h"
+
 namespace rc {
 
 namespace {
@@ -22,6 +24,7 @@ SessionState::SessionState(SessionConfig config)
       camera_(config_.scene->camera, session_->width(), session_->height()),
       recorder_(session_->width(), session_->height(), &session_->order()),
       checkpoints_(config_.checkpointEvery) {
+    if (!config_.keepRays && raysImplied(*session_)) recorder_.dropRays();
     session_->addSink(&recorder_);
     sample();
     checkpoint();
@@ -34,6 +37,18 @@ SessionState::~SessionState() {
 const SampleFan& SessionState::fan(int pixel) const {
     if (!fan_ || fan_->pixel != pixel) fan_ = std::make_unique<SampleFan>(SampleFan::trace(*session_, pixel));
     return *fan_;
+}
+
+EventRecord SessionState::event(std::size_t i) const {
+    EventRecord r = recorder_.events()[i];
+    if (recorder_.events().raysDropped())
+        if (const auto ray = impliedRay(*session_, r.pixel, r.node)) {
+            r.setRay(ray->task.query.ray);
+            // The log keeps a shadow ray's hit distance only: a cache may answer one with
+            // any object in the way; every other ray's answer is its nearest hit
+            if (r.rayKind() != rc::RayKind::Shadow) r.setDistance(!r.deferred(), ray->nearest);
+        }
+    return r;
 }
 
 const rc::BeamTreeBuilder& SessionState::beams() const {

@@ -20,6 +20,10 @@ struct SessionConfig {
     rc::RenderOptions options;
     /// Steps between checkpoints (StepCheckpoints), which Step back goes back to.
     std::int64_t checkpointEvery = StepCheckpoints::kEvery;
+    /// Keep every event's ray in the recorder's log. Otherwise (the default) the log keeps
+    /// none when they can be traced again exactly (rc::raysImplied), and event() traces
+    /// an event's ray again when asked.
+    bool keepRays = false;
 };
 
 /// How far a multi-step run goes.
@@ -65,6 +69,9 @@ public:
     const rc::Scene& scene() const { return *config_.scene; }
     const rc::RenderSession& session() const { return *session_; }
     const TraceRecorder& recorder() const { return recorder_; }
+    /// Recorded event `i` (< recorder().events().size()) with its ray: the log's, or, when
+    /// the log keeps none, its pixel's ray at its path traced again (rc::impliedRay).
+    EventRecord event(std::size_t i) const;
     /// The beam tree's builder, fed from the recorder's events when asked (only the events
     /// added since the last ask): a page that never asks keeps no second copy of its rays.
     const rc::BeamTreeBuilder& beams() const;

@@ -29,13 +29,19 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
         return;
     }
     lastCommitted_ = e;
-    if (firstVisit_[p] < 0) firstVisit_[p] = e.step;
+    if (firstVisit_[p] < 0) firstVisit_[p] = std::int32_t(e.step);
     if (e.lookup.decision == rc::Decision::Hit) ++hits_[p];
     if (e.lookup.decision == rc::Decision::Miss) {
         misses_.push_back(index);
         ++missCount_[p];
         if (missReason_[p] == 0) missReason_[p] = std::uint8_t(e.lookup.reason);
     }
+}
+
+std::size_t TraceRecorder::pixelBytes() const {
+    const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(lastOfPixel_) + bytes(tests_) + bytes(hits_) + bytes(missCount_) + bytes(firstVisit_) +
+           bytes(missReason_);
 }
 
 std::vector<int> TraceRecorder::eventsOf(int pixel) const {

@@ -30,11 +30,15 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     const EventLog& events() const { return events_; }
+    /// Keep no event's ray (EventLog::dropRays); before the first event.
+    void dropRays() { events_.dropRays(); }
     /// Indices into events() of committed misses and of deferrals, in order.
     const BlockVector<std::int32_t>& misses() const { return misses_; }
     /// Bytes the per-event record takes (events and the miss index), to weigh against
-    /// events().size(). The per-pixel tallies come on top: width x height x 25 bytes.
+    /// events().size(). The per-pixel tallies come on top: pixelBytes().
     std::size_t eventBytes() const { return events_.bytes() + misses_.bytes(); }
+    /// Bytes the per-pixel tallies take, counted from what is allocated.
+    std::size_t pixelBytes() const;
     /// The last event heard (committed or deferred), if any.
     const std::optional<rc::TraceEvent>& lastEvent() const { return last_; }
     /// The last committed event, if any.
@@ -52,7 +56,7 @@ public:
     std::uint32_t hitsAt(int pixel) const { return hits_[pixel]; }
     std::uint32_t missesAt(int pixel) const { return missCount_[pixel]; }
     /// Step at which the pixel's first ray was traced, -1 if none.
-    std::int64_t firstVisit(int pixel) const { return firstVisit_[pixel]; }
+    std::int32_t firstVisit(int pixel) const { return firstVisit_[pixel]; }
     /// Reason of the pixel's first committed miss (rc::MissReason::None if none).
     rc::MissReason missReasonAt(int pixel) const { return rc::MissReason(missReason_[pixel]); }
 
@@ -82,7 +86,9 @@ private:
     std::vector<std::int32_t> lastOfPixel_;
     std::vector<std::int32_t> tests_;
     std::vector<std::uint32_t> hits_, missCount_;
-    std::vector<std::int64_t> firstVisit_;
+    /// A step fits 32 bits as an event's index does: a step is counted in committed
+    /// events, and the log numbers its events in 32 bits (EventRecord::step, lastOfPixel_).
+    std::vector<std::int32_t> firstVisit_;
     std::vector<std::uint8_t> missReason_;
     std::optional<rc::TraceEvent> last_, lastCommitted_;
     std::vector<StatSample> samples_;

@@ -1,0 +1,118 @@
+// The recorder's log keeps no ray when the rays can be traced again: every event's ray,
+// traced again from its pixel and path, is the one the render traced, bit for bit as the
+// log would have kept it.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <limits>
+#include <memory>
+
+#include "scene/builtin_scenes.h"
+#include "view/implied_ray.h"
+#include "view/session_state.h"
+
+namespace {
+
+std::unique_ptr<rc::SessionState> run(const char* scene, rc::RenderOptions o, bool keepRays) {
+    rc::SessionConfig c{std::make_shared<const rc::Scene>(rc::loadScene(scene)), o};
+    c.keepRays = keepRays;
+    auto s = std::make_unique<rc::SessionState>(std::move(c));
+    REQUIRE(s->runUntil(rc::RunGoal::ToEnd, 0));
+    return s;
+}
+
+// Every event of a render that keeps no ray equals, with its ray traced again, the event of
+// the same render that keeps them all
+void sameEvents(const char* scene, const rc::RenderOptions& o) {
+    INFO(scene << " cache " << toString(o.cache) << " order " << toString(o.order) << " spp " << o.shading.sampling.spp);
+    const auto keeping = run(scene, o, true), dropping = run(scene, o, false);
+    const rc::SessionState &kept = *keeping, &dropped = *dropping;
+    REQUIRE_FALSE(kept.recorder().events().raysDropped());
+    REQUIRE(dropped.recorder().events().raysDropped());
+    const rc::EventLog& a = kept.recorder().events();
+    REQUIRE(a.size() == dropped.recorder().events().size());
+    REQUIRE(a.size() > 100);
+    std::size_t differ = 0;
+    for (auto it = a.begin(); it != a.end(); ++it) {
+        const rc::EventRecord want = *it, got = dropped.event(it.index());
+        differ += std::memcmp(&want, &got, sizeof want) != 0;
+    }
+    REQUIRE(differ == 0);
+}
+
+}  // namespace
+
+TEST_CASE("Every event's ray, traced again from its pixel and path, is the one recorded", "[view][event]") {
+    rc::RenderOptions o;
+    o.width = o.height = 40;
+    for (const char* scene : {"cube:3", "glass", "trio"})
+        for (rc::CacheKind cache : {rc::CacheKind::None, rc::CacheKind::Blocker, rc::CacheKind::BlockerPlus, rc::CacheKind::Cylinder})
+            for (rc::OrderKind order : {rc::OrderKind::Scanline, rc::OrderKind::BreadthFirst}) {
+                o.cache = cache;
+                o.order = order;
+                sameEvents(scene, o);
+            }
+}
+
+TEST_CASE("Distributed rays (pixel samples, soft shadows, gloss) are traced again exactly too", "[view][event]") {
+    rc::RenderOptions o;
+    o.width = o.height = 24;
+    o.cache = rc::CacheKind::BlockerPlus;
+    o.order = rc::OrderKind::BreadthFirst;
+    o.shading.sampling.spp = 4;
+    o.shading.sampling.lightRadius = 0.3;
+    o.shading.sampling.shadowSamples = 3;
+    o.shading.sampling.glossDegrees = 5.0;
+    o.shading.sampling.glossSamples = 2;
+    sameEvents("glass", o);
+    sameEvents("trio", o);
+}
+
+TEST_CASE("A path its pixel's rays never take is no ray", "[view][event]") {
+    rc::RenderOptions o;
+    o.width = o.height = 16;
+    const auto state = run("trio", o, false);
+    const rc::SessionState& s = *state;
+    REQUIRE_FALSE(rc::impliedRay(s.session(), -1, 0));
+    REQUIRE_FALSE(rc::impliedRay(s.session(), 16 * 16, 0));
+    REQUIRE_FALSE(rc::impliedRay(s.session(), 0, s.session().cacheTree().size()));
+    REQUIRE(rc::impliedRay(s.session(), 0, 0));
+    // A pixel whose eye ray hits nothing spawns nothing: no path below its eye ray
+    int empty = -1;
+    for (int px = 0; px < 16 * 16 && empty < 0; ++px)
+        if (s.recorder().events()[std::size_t(s.recorder().eventAt(px, 0))].hit < 0) empty = px;
+    REQUIRE(empty >= 0);
+    REQUIRE(s.session().cacheTree().size() > 1);
+    for (int n = 1; n < s.session().cacheTree().size(); ++n) {
+        REQUIRE(s.recorder().eventAt(empty, n) == -1);
+        REQUIRE_FALSE(rc::impliedRay(s.session(), empty, n));
+    }
+}
+
+TEST_CASE("The page's records of a render take at most kRecordBytes a pixel", "[view][event][memory]") {
+    // The page's render (web/raycache_web.cpp): one checkpoint, rays left out of the log.
+    // Its memory is the render's (what raycache render holds) plus these records, counted
+    // here from what they allocate: the event log and miss index, the per-pixel tallies
+    // and the checkpoints, on the render tests/web/page_memory.py measures (cube:4,
+    // blocker+, breadth-first) at a smaller size. The bound is what they take with rays
+    // left out and 32-bit tallies, with a little room; a log that kept every ray would take
+    // about half as much again. (page_memory.py --limit 3, the whole page against the CLI,
+    // is not met yet: see docs/pages/gui.md, "What recording costs".)
+    constexpr double kRecordBytes = 66.0;
+    rc::RenderOptions o;
+    o.width = o.height = 384;
+    o.cache = rc::CacheKind::BlockerPlus;
+    o.order = rc::OrderKind::BreadthFirst;
+    rc::SessionConfig c{std::make_shared<const rc::Scene>(rc::makeBuiltin("cube:4")), o};
+    c.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
+    rc::SessionState s(std::move(c));
+    REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    const rc::TraceRecorder& rec = s.recorder();
+    const double pixels = double(s.width()) * s.height();
+    const double events = double(rec.events().size()), bytes = double(rec.eventBytes() + rec.pixelBytes() + s.checkpoints().bytes());
+    WARN("records: " << bytes / pixels << " bytes a pixel (" << double(rec.eventBytes()) / events << " an event, "
+                     << events / pixels << " events a pixel; tallies " << double(rec.pixelBytes()) / pixels << ")");
+    REQUIRE(rec.events().raysDropped());
+    REQUIRE(events / pixels > 2.5);  // the render's rays: a shadow and a reflection ray for most eye rays
+    REQUIRE(bytes / pixels <= kRecordBytes);
+}
