@@ -101,14 +101,17 @@ SceneSketch SceneSketch::of(const rc::SessionState& s, const rc::Selection& sel,
     if (samples) k.fan = s.fan(f.pixel);
     k.hull = rc::hullOf(s, f);
     k.cylinder = rc::cylinderOf(s, f);
-    // The object that sets the cylinder's radius: nearest its axis, the ray's own excepted
+    // The object that sets the cylinder's radius: nearest its axis, the ray's own excepted,
+    // each measured by rc::safetyRadius alone (tutorial 02's function: in a student build,
+    // the student's)
     const rc::SafetyCylinder& c = k.cylinder.cylinder;
     if (c.radius >= 0.0) {
         double best = rc::kNoHit;
+        std::vector<rc::Sphere> one(1);
         for (int id = 0; id < scene.size(); ++id) {
             if (id == f.hit || id == f.origin.object) continue;
-            const rc::Sphere& b = scene.objects[std::size_t(id)].bound;
-            const double gap = rc::segmentDistance(b.c, c.a, c.b) - b.r;
+            one[0] = scene.objects[std::size_t(id)].bound;
+            const double gap = rc::safetyRadius(one, -1, c.a, c.b);
             if (gap < best) {
                 best = gap;
                 k.limiter = id;

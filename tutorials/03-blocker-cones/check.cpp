@@ -1,9 +1,8 @@
 // Tutorial 03's check: rc::Hull (your tutorials/03-blocker-cones/exercise.cpp in a student
-// build) against an independent oracle. The convex hull of two spheres is the union of the
-// spheres between them, centre and radius moving linearly from a to b; outside it, the
-// distance is the least over that family, found by golden-section search in long double
-// (the function is convex). The blocker lists of cube:4 are checked against lists the
-// oracle builds sphere by sphere. The oracle's answers are data (oracles.h, oracle_data.txt).
+// build) against an independent oracle, computed in long double by another method than the
+// reference's. The blocker lists of cube:4 are checked against lists the oracle builds
+// sphere by sphere. The oracle's answers are data (oracles.h, oracle_data.txt); the oracle
+// stays with the instructor.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
