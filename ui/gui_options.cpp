@@ -145,14 +145,7 @@ bool readWindow(const WindowFlags& f, GuiOptions& out, QString& message) {
 void showOf(const rc::ViewerSettings& s, GuiOptions& out) {
     if (s.overlays) {
         Overlays o;
-        for (const std::string& name : *s.overlays) {
-            if (name == "cylinder") o.cylinder = true;
-            else if (name == "hull") o.hull = true;
-            else if (name == "frontier") o.frontier = true;
-            else if (name == "misses") o.misses = true;
-            else if (name == "samples") o.samples = true;
-            else if (name == "grid") o.grid = true;
-        }
+        for (const std::string& name : *s.overlays) o.turnOn(name);
         out.overlays = o;
     }
     out.heatmap = s.heatmap.empty() ? Heatmap::None : *parseHeatmap(q(s.heatmap));

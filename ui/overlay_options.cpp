@@ -22,18 +22,23 @@ std::optional<Overlays> Overlays::parse(const QString& list) {
     for (const QString& raw : list.split(',', Qt::SkipEmptyParts)) {
         const QString w = raw.trimmed().toLower();
         // Names and aliases are the core's (rc::overlayRegistry), as the page's
-        const std::string name = rc::overlayNamed(w.toStdString());
-        if (name == "cylinder") o.cylinder = true;
-        else if (name == "hull") o.hull = true;
-        else if (name == "frontier") o.frontier = true;
-        else if (name == "misses") o.misses = true;
-        else if (name == "samples") o.samples = true;
-        else if (name == "grid") o.grid = true;
-        else if (w == "all") o.cylinder = o.hull = o.frontier = o.misses = o.samples = true;
+        if (o.turnOn(rc::overlayNamed(w.toStdString()))) continue;
+        if (w == "all") o.cylinder = o.hull = o.frontier = o.misses = o.samples = true;
         else if (w == "none") o.cylinder = o.hull = o.frontier = o.misses = o.samples = false;
         else return std::nullopt;
     }
     return o;
+}
+
+bool Overlays::turnOn(const std::string& name) {
+    if (name == "cylinder") cylinder = true;
+    else if (name == "hull") hull = true;
+    else if (name == "frontier") frontier = true;
+    else if (name == "misses") misses = true;
+    else if (name == "samples") samples = true;
+    else if (name == "grid") grid = true;
+    else return false;
+    return true;
 }
 
 }  // namespace rcgui

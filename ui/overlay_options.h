@@ -33,6 +33,8 @@ struct Overlays {
 
     /// Parses "cylinder,cone,frontier,misses,samples" (also "hull", "grid", "all", "none").
     static std::optional<Overlays> parse(const QString& list);
+    /// Turns on the overlay registered as `name` (rc::overlayRegistry); false for no such name.
+    bool turnOn(const std::string& name);
 };
 
 }  // namespace rcgui
