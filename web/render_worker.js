@@ -37,7 +37,7 @@ function workerPicture(w, r, buffers, top) {
     width, height, layer, image, heatTop: top, shapes,
     frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
     keys: JSON.parse(r.keys(view.cylinder, view.hull, view.frontier, view.misses)),
-    statistics: JSON.parse(r.statistics()), caption: r.caption(), rayTree: JSON.parse(r.rayTree()),
+    statistics: JSON.parse(r.statistics()), caption: r.caption(),
     focusPixel: r.focusPixel(), selectedPixel: r.selectedPixel(), done: r.done(),
   };
 }
@@ -58,6 +58,8 @@ function workerFrame(w, extra) {
   // One heatmap scale for both renders side by side
   const top = w.view.heatmap ? Math.max(w.render.heatTop(), w.compare ? w.compare.heatTop() : 1) : 1;
   const first = workerPicture(w, w.render, buffers, top);
+  // The page lists the ray tree of the first render only
+  first.rayTree = JSON.parse(w.render.rayTree());
   const second = w.compare ? workerPicture(w, w.compare, buffers, top) : null;
   if (second) second.compareCaption = w.render.compareCaption(w.compare);
   w.self.postMessage(Object.assign({ type: 'frame' }, first, {
