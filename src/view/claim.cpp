@@ -8,6 +8,8 @@
 
 #include "search/cache_tree.h"
 #include "view/overlay_layers.h"
+#include "view/overlay_registry.h"
+#include "view/viewer_settings.h"
 
 namespace rc {
 
@@ -179,7 +181,7 @@ std::string claimNotDrawn(const Claim& claim, bool compared, const std::vector<s
             if (heatmap != drawn.substr(8))
                 return "'" + claim.text + "' reads " + side->quantity + ", which the " + drawn.substr(8) +
                        " heatmap shows: the stop does not show it";
-        } else if (!has(overlays, drawn) && !has(overlays, "all") && !(drawn == "cone" && has(overlays, "hull"))) {
+        } else if (!has(overlays, drawn) && !has(overlays, overlayNamed(drawn)) && !has(overlays, "all")) {
             return "'" + claim.text + "' reads " + side->quantity + ", which the " + drawn +
                    " overlay draws: the stop does not draw it";
         }
@@ -187,27 +189,14 @@ std::string claimNotDrawn(const Claim& claim, bool compared, const std::vector<s
     return {};
 }
 
-namespace {
-std::vector<std::string> splitList(const std::string& s) {
-    std::vector<std::string> out;
-    std::size_t from = 0;
-    while (from <= s.size() && !s.empty()) {
-        const auto comma = s.find(',', from);
-        const std::string item = trim(s.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
-        if (!item.empty()) out.push_back(item);
-        if (comma == std::string::npos) break;
-        from = comma + 1;
-    }
-    return out;
-}
-}  // namespace
-
 ClaimView claimViewOf(const TourStop& stop) {
+    // Read as the viewers read the stop (rc::shownSettings): registered overlay names, "all"
+    // expanded, no heatmap as ""
+    const ViewerSettings shown = shownSettings(stop);
     ClaimView v;
-    v.overlays = splitList(stop.value("overlays"));
-    for (std::string& o : v.overlays) std::transform(o.begin(), o.end(), o.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    v.heatmap = stop.value("heatmap");
-    v.panels = splitList(stop.value("panels"));
+    v.overlays = shown.overlays.value_or(std::vector<std::string>{});
+    v.heatmap = shown.heatmap;
+    v.panels = shown.panels.value_or(std::vector<std::string>{});
     return v;
 }
 

@@ -340,18 +340,32 @@ std::string readSettings(const std::vector<std::string>& args, ViewerSettings& o
     return flags.read(out, error) ? "" : error;
 }
 
-std::vector<std::string> stopArguments(const Tour& tour, int k) {
-    const TourStop& st = tour.stops.at(std::size_t(k - 1));
+namespace {
+/// A stop's settings as flags, but its scene: `scene` (nothing when empty)
+std::vector<std::string> settingArguments(const TourStop& st, const std::string& scene) {
     std::vector<std::string> args;
     for (const TourSetting& s : st.settings) {
         if (s.key == "scene") {
-            args.push_back(stopScene(tour, st));  // a relative path: beside the tour
+            if (!scene.empty()) args.push_back(scene);
             continue;
         }
         // --key=value: a value that starts with '-' (an orbit of -30,10) is still the key's
         args.push_back("--" + s.key + (s.value.empty() ? "" : "=" + s.value));
     }
     return args;
+}
+}  // namespace
+
+std::vector<std::string> stopArguments(const Tour& tour, int k) {
+    const TourStop& st = tour.stops.at(std::size_t(k - 1));
+    // A relative scene path: beside the tour
+    return settingArguments(st, st.value("scene").empty() ? "" : stopScene(tour, st));
+}
+
+ViewerSettings shownSettings(const TourStop& st) {
+    ViewerSettings s;
+    if (!readSettings(settingArguments(st, ""), s).empty()) return {};
+    return s;
 }
 
 ViewerSettings stopSettings(const Tour& tour, int k) {

@@ -88,6 +88,11 @@ std::string readSettings(const std::vector<std::string>& args, ViewerSettings& o
 /// against the tour's folder, rc::stopScene) the one argument.
 std::vector<std::string> stopArguments(const Tour& tour, int k);
 
+/// What stop `st` shows (overlays, heatmap, panels, ...), read by readSettings() as
+/// stopSettings() reads it, its scene left out: what is drawn does not depend on it. A stop
+/// that is not read (the tour's loading reports it) shows nothing set.
+ViewerSettings shownSettings(const TourStop& st);
+
 /// Stop `k` (from 1) of `tour`, read by readSettings(). \throws TourError
 /// `file:line:column: stop K (title): why` when it is not read, or when there is no stop `k`.
 ViewerSettings stopSettings(const Tour& tour, int k);
