@@ -26,36 +26,16 @@ bool parsePair(const QString& s, QChar sep, int& a, int& b) {
     const QStringList parts = s.split(sep);
     return parts.size() == 2 && parseInt(parts[0], 0, 100000, a) && parseInt(parts[1], 0, 100000, b);
 }
-/// Every cache's name, in the order tables list them
-QStringList cacheNames() {
-    QStringList out;
-    for (rc::CacheKind k : rc::allCacheKinds()) out << text(rc::toString(k));
-    return out;
-}
-/// Every order's name (rc::orderRegistry)
-QStringList orderNames() {
-    QStringList out;
-    for (const std::string& n : rc::orderRegistry().names()) out << text(n);
-    return out;
-}
-/// "a, b or c"
-QString oneOf(QStringList names) {
-    const QString last = names.takeLast();
-    return names.join(", ") + " or " + last;
-}
 QString q(const std::string& s) { return QString::fromStdString(s); }
 }  // namespace
 
 std::optional<CompareChoice> parseCompare(const QString& spec, QString& error) {
-    const QStringList parts = spec.trimmed().toLower().split(':');
-    const auto cache = rc::parseCacheKind(parts[0].toStdString());
-    const auto order = parts.size() == 2 ? rc::parseOrderKind(parts[1].toStdString()) : std::nullopt;
-    if (parts.size() != 2 || !cache || !order) {
-        error = "--compare must be CACHE:ORDER, with CACHE " + oneOf(cacheNames()) +
-                " and ORDER " + oneOf(orderNames()) + " (e.g. none:scanline), not '" + spec + "'";
+    std::string cache, order, why;
+    if (!rc::readCompare(spec.toStdString(), cache, order, why)) {
+        error = q(why);
         return std::nullopt;
     }
-    return CompareChoice{*cache, *order};
+    return CompareChoice{*rc::parseCacheKind(cache), *rc::parseOrderKind(order)};
 }
 
 QString toString(const CompareChoice& c) {

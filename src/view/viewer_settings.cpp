@@ -99,6 +99,18 @@ struct SettingsFlags::Values {
     Sampling sampling;
 };
 
+bool readCompare(const std::string& spec, std::string& cache, std::string& order, std::string& error) {
+    const std::vector<std::string> parts = split(lower(trimmed(spec)), ':');
+    if (parts.size() != 2 || !parseCacheKind(parts[0]) || !parseOrderKind(parts[1])) {
+        error = "--compare must be CACHE:ORDER, with CACHE " + oneOf(cacheRegistry().names()) + " and ORDER " +
+                oneOf(orderRegistry().names()) + " (e.g. none:scanline), not '" + spec + "'";
+        return false;
+    }
+    cache = parts[0];
+    order = parts[1];
+    return true;
+}
+
 SettingsFlags::SettingsFlags(CLI::App& app) : v_(std::make_unique<Values>()) {
     Values& f = *v_;
     // What renders: the options the CLI has too (view/flag_definitions.h)
@@ -146,16 +158,7 @@ bool readRender(const auto& f, ViewerSettings& out, std::string& error) {
     out.band = f.band;
     out.steps = f.steps;
     out.sampling = f.sampling;
-    if (!f.compare.empty()) {
-        const std::vector<std::string> parts = split(lower(f.compare), ':');
-        if (parts.size() != 2 || !parseCacheKind(parts[0]) || !parseOrderKind(parts[1])) {
-            error = "--compare must be CACHE:ORDER, with CACHE " + oneOf(cacheRegistry().names()) + " and ORDER " +
-                    oneOf(orderRegistry().names()) + " (e.g. none:scanline), not '" + f.compare + "'";
-            return false;
-        }
-        out.compareCache = parts[0];
-        out.compareOrder = parts[1];
-    }
+    if (!f.compare.empty() && !readCompare(f.compare, out.compareCache, out.compareOrder, error)) return false;
     // The core's own check, so the limits are the CLI's
     if (const auto e = samplingError(out.sampling, ShadingOptions{}.maxDepth)) {
         error = *e;

@@ -58,6 +58,11 @@ const std::vector<std::string>& sceneAngleNames();
 /// The Qt window's panels a setting may name: ray-tree, cache-tree, statistics, event-log, objects.
 const std::vector<std::string>& panelNames();
 
+/// A compared render's "CACHE:ORDER" (e.g. none:scanline; any case, spaces around the parts
+/// allowed) into its registered names, or false and a sentence in `error` naming the choices.
+/// The GUI's compare box and its --compare flag both read it here.
+bool readCompare(const std::string& spec, std::string& cache, std::string& order, std::string& error);
+
 /// The viewer's options declared on a CLI11 app (a command line adds its own beside them).
 class SettingsFlags {
 public:
