@@ -45,9 +45,10 @@ double coneAngle(const rc::Vec3& apex, const rc::Vec3& axis, const std::vector<r
 // The lowest-numbered sphere the ray meets at all, -1 for none (not the nearest: a ray
 // just inside the empty cone must meet none)
 int anyMet(const rc::Ray& ray, const std::vector<rc::Sphere>& spheres) {
-    for (int j = 0; j < int(spheres.size()); ++j)
-        if (rc::intersectSphere(ray, spheres[j], rc::Start::Elsewhere) < rc::kNoHit) return j;
-    return -1;
+    const auto met = std::find_if(spheres.begin(), spheres.end(), [&](const rc::Sphere& s) {
+        return rc::intersectSphere(ray, s, rc::Start::Elsewhere) < rc::kNoHit;
+    });
+    return met == spheres.end() ? -1 : int(met - spheres.begin());
 }
 
 // ---- The scene as a cache sees it: every question counted ----------------------------
@@ -80,7 +81,6 @@ public:
         ++tests_;
         return spheres_[j];
     }
-    const rc::Vec3& eye() const { return eye_; }
     long tests() const { return tests_; }
 
 private:
