@@ -69,7 +69,11 @@ TEST_CASE("capsule containment is the containment of both endpoints", "[cylinder
     for (int i = 0; i < 2000; ++i) {
         const Vec3 p(u(rng), u(rng) / 10, u(rng) / 10), q(u(rng), u(rng) / 10, u(rng) / 10);
         if (!cyl.contains(p, q)) continue;
-        for (double l = 0; l <= 1.0; l += 0.05) REQUIRE(cyl.distance(p + l * (q - p)) <= cyl.radius + 1e-12);
+        const SafetyCylinder wider{cyl.a, cyl.b, cyl.radius + 1e-12};
+        for (double l = 0; l <= 1.0; l += 0.05) {
+            const Vec3 x = p + l * (q - p);
+            REQUIRE(wider.contains(x, x));
+        }
     }
     REQUIRE(segmentDistance(Vec3(5, 3, 4), Vec3(0), Vec3(10, 0, 0)) == Approx(5.0));
 }

@@ -135,8 +135,10 @@ Lookup BlockerCache::probe(const Query& q, CacheEntry& e, LookupMode mode, Count
     // [blocker-probe]
     // Test the cached sphere first
     ++n.intersectionTests;
-    const double t = scene_.intersect(q.ray, e.object, q.origin);
-    if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
+    Answer cached;
+    keepNearer(scene_, q, e.object, cached);
+    if (cached.object < 0) return {false, {}, Decision::Miss, MissReason::TargetMissed};
+    const double t = cached.t;
     // The potential blockers between origin and target (its tile, for a large polygon)
     const int target = lists_.pointSite(e.object, q.ray.at(t));
     const BlockerList& list = lists_.get(lists_.originSite(q), target, e.list, n);

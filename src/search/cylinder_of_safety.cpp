@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "search/object_test.h"
 #include "search/segment_clearance.h"
 
 namespace rc {
@@ -83,9 +84,8 @@ Lookup CylinderOfSafety::probe(const Query& q, CacheEntry& e, Counters& n) const
     if (e.object >= 0) {
         // Test the cached object first
         ++n.intersectionTests;
-        const double t = scene_.intersect(q.ray, e.object, q.origin);
-        if (!(t < q.tmax)) return {false, {}, Decision::Miss, MissReason::TargetMissed};
-        a = {e.object, t};
+        keepNearer(scene_, q, e.object, a);
+        if (a.object < 0) return {false, {}, Decision::Miss, MissReason::TargetMissed};
     }
     // Then the new segment must stay inside the cylinder of safety (built the first time
     // a segment may fit in it)

@@ -10,9 +10,10 @@
 namespace rc {
 
 /// The end of a test that is counted already: object `id`'s distance along `q`, kept in
-/// `best` if it is a hit before q.tmax and nearer. For a ray that may meet `id` (not the
-/// surface it leaves). Inline in the instructor's build; the student's rc::standardTest()
-/// (tutorial 01) in the student edition, its count not counted twice.
+/// `best` if it is a hit before q.tmax and nearer; the surface the ray leaves outward is no
+/// hit (convexity). Inline in the instructor's build; the student's rc::standardTest()
+/// (tutorial 01) in the student edition, its count not counted twice. The caches' probes
+/// test their cached object with it.
 inline void keepNearer(const Scene& scene, const Query& q, int id, Answer& best) {
     // BEGIN SOLUTION 01
     const double t = scene.intersect(q.ray, id, q.origin);

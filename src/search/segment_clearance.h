@@ -20,8 +20,13 @@ struct SegmentClearance final : SphereCull {
         : ab(to - from), skip(skip), skipToo(skipToo), stopBelow(stopBelow), least(cap) {
         a = from;
         b = to;
+        // BEGIN SOLUTION 02
         const double len2 = glm::dot(ab, ab);
         invLen2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+        // END SOLUTION
+        // BEGIN STUB
+        // invLen2 = 0.0;  // not used: distance() asks rc::segmentDistance in this edition
+        // END STUB
         radius = limit = cap;
     }
     /// From the sphere's surface: the distance to the segment less the sphere's radius. The

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "analysis/median.h"
+#include "search/standard_algorithm.h"
 #include "study/precise_intersection.h"
 
 namespace rc {
@@ -47,7 +48,12 @@ public:
         if (a.object < 0) return;
         if (q.kind == RayKind::Shadow) {
             const double scale = std::max({std::abs(q.ray.o.x), std::abs(q.ray.o.y), std::abs(q.ray.o.z)});
-            const bool self = a.object == q.origin.object && !q.origin.inside;
+            // The surface the ray leaves outward: the one the complete search's test
+            // (rc::standardTest, tutorial 01's hole) passes over without a counted test
+            Counters tested;
+            Answer unused;
+            standardTest(scene_, q, a.object, unused, tested);
+            const bool self = tested.intersectionTests == 0;
             if (self || a.t < 1e-9 * scale) {
                 // Acne: counted here, and kept out of the distance errors (a root at the
                 // rounding level of the origin has no relative accuracy to speak of)

@@ -7,6 +7,7 @@
 
 #include "geometry/intersection.h"
 #include "geometry/portable_math.h"
+#include "search/standard_algorithm.h"
 
 namespace rc {
 
@@ -85,13 +86,20 @@ std::optional<RayFocus> RayFocus::of(const SessionState& s, const Selection& sel
 rc::SafetyCylinder cylinderAround(const rc::Scene& scene, const RayFocus& f) {
     const rc::Vec3 from = f.ray.o;
     const rc::Vec3 to = f.segmentEnd(scene);
-    // Every object's bounding sphere but the one the ray cannot meet again; the radius is
-    // rc::safetyRadius's (tutorial 02's hole: in a student build, the student's)
+    // Every object's bounding sphere but the one the ray cannot meet again: the one
+    // rc::standardTest (tutorial 01's hole) passes over without a counted test. The radius
+    // is rc::safetyRadius's (tutorial 02's hole). In a student build both are the student's
+    rc::Query q;
+    q.ray = f.ray;
+    q.origin = f.origin;
     std::vector<rc::Sphere> spheres;
     spheres.reserve(std::size_t(scene.size()));
     int hit = -1;
     for (int id = 0; id < scene.size(); ++id) {
-        if (id == f.origin.object && !f.origin.inside) continue;
+        rc::Counters tested;
+        rc::Answer unused;
+        rc::standardTest(scene, q, id, unused, tested);
+        if (tested.intersectionTests == 0) continue;
         if (id == f.hit) hit = int(spheres.size());
         spheres.push_back(scene.objects[id].bound);
     }

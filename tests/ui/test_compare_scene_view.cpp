@@ -241,20 +241,16 @@ TEST_CASE("Scene view, the paper's Figure 1: along the ray, the cylinder is much
     // Down the ray: its start and its hit are one point (the +)
     const rc::Vec3 end = k.focus->segmentEnd(f.state().scene());
     REQUIRE(QLineF(v->toWidget(k.focus->ray.o), v->toWidget(end)).length() < 0.5);
-    // The radius is the gap to the nearest other bounding sphere, measured here directly
+    // The radius is rc::safetyRadius's for this segment and every bounding sphere, the hit
+    // (object 0) excepted; the sphere the view names as setting it has that gap alone
     const rc::Scene& scene = f.state().scene();
-    double gap = 1e300;
-    int nearest = -1;
-    for (int id = 1; id < scene.size(); ++id) {
-        const rc::Sphere& s = scene.objects[std::size_t(id)].bound;
-        const double g = rc::segmentDistance(s.c, k.focus->ray.o, end) - s.r;
-        if (g < gap) {
-            gap = g;
-            nearest = id;
-        }
-    }
+    std::vector<rc::Sphere> bounds;
+    for (const rc::Object& o : scene.objects) bounds.push_back(o.bound);
+    const double gap = rc::safetyRadius(bounds, 0, k.focus->ray.o, end);
     REQUIRE(k.cylinder.cylinder.radius == Approx(gap).epsilon(1e-6));
-    REQUIRE(k.limiter == nearest);
+    REQUIRE(k.limiter > 0);
+    REQUIRE(k.limiter < scene.size());
+    REQUIRE(rc::safetyRadius({bounds[std::size_t(k.limiter)]}, -1, k.focus->ray.o, end) == Approx(gap).epsilon(1e-6));
     // Much smaller than the sphere it hits: under a third of its radius, a tenth of its area
     REQUIRE(k.cylinder.cylinder.radius < scene.objects[0].bound.r / 3);
     REQUIRE(v->caption().contains("cylinder of safety"));

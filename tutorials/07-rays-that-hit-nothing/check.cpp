@@ -10,8 +10,9 @@
 // makes, in every one of its functions; every n tests are charged as one more complete
 // search, and a lookup of n tests or more is not an answer. The check prints the
 // measurement the student reports (complete searches per beam) beside the no-cache,
-// cylinder-of-safety and one-empty-cone caches it runs itself, through the same counting,
-// and draws the student's cache at work as a PNG.
+// cylinder-of-safety and one-empty-cone caches, counted the same way (their rows, like which
+// sphere each eye ray hits, are recorded data: oracles.h), and draws the student's cache at
+// work as a PNG.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,6 @@
 
 #include "exercise.h"
 #include "oracles.h"
-#include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
 #include "search/query.h"
 #include "tutorial_picture.h"
@@ -37,30 +37,24 @@
 
 namespace {
 
-double angleBetween(const rc::Vec3& a, const rc::Vec3& b) {
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
-
 // The check's oracle for the empty cone (data: oracles.h, oracle_data.txt)
 double coneAngle(const rc::Vec3& apex, const rc::Vec3& axis, const std::vector<rc::Sphere>& spheres) {
     return tutorial::oracleConeAngle(apex, axis, spheres);
 }
 
-// The complete search: the nearest sphere the ray hits, ties to the lower index
-int nearest(const rc::Ray& ray, const std::vector<rc::Sphere>& spheres) {
-    rc::Answer best;
-    for (int j = 0; j < int(spheres.size()); ++j) {
-        const double t = rc::intersectSphere(ray, spheres[j], rc::Start::Elsewhere);
-        if (t < rc::kNoHit && rc::nearer(t, j, best)) best = {j, t};
-    }
-    return best.object;
+// The lowest-numbered sphere the ray meets at all, -1 for none (not the nearest: a ray
+// just inside the empty cone must meet none)
+int anyMet(const rc::Ray& ray, const std::vector<rc::Sphere>& spheres) {
+    const auto met = std::find_if(spheres.begin(), spheres.end(), [&](const rc::Sphere& s) {
+        return rc::intersectSphere(ray, s, rc::Start::Elsewhere) < rc::kNoHit;
+    });
+    return met == spheres.end() ? -1 : int(met - spheres.begin());
 }
 
 // ---- The scene as a cache sees it: every question counted ----------------------------
 
 // The only way a cache learns about the spheres. Every distance() and disc() is one test,
-// counted here whichever function of the cache asks; the check's own caches below read
-// the spheres through sphere(), counted the same way.
+// counted here whichever function of the cache asks.
 class CountedSpheres final : public tutorial::Spheres {
 public:
     CountedSpheres(const std::vector<rc::Sphere>& spheres, const rc::Vec3& eye) : spheres_(spheres), eye_(eye) {}
@@ -69,65 +63,30 @@ public:
         const rc::Sphere& s = sphere(j);
         return rc::intersectSphere(rc::Ray{eye_, d}, s, rc::Start::Elsewhere);
     }
+    // The disc's two angles are measured with your own emptyConeAngle() (part 1, so it comes
+    // first): the angle to the centre is the empty cone of a sphere of radius 0 there, and
+    // the disc's radius is a right angle less the empty cone around a direction square to
+    // the centre (that ray misses the sphere unless the eye is inside it)
     Disc disc(const rc::Vec3& axis, int j) const override {
         const rc::Sphere& s = sphere(j);
-        const double dist = glm::length(s.c - eye_);
-        return {angleBetween(axis, s.c - eye_), s.r >= dist ? M_PI : std::asin(s.r / dist)};
+        const rc::Vec3 toCentre = glm::normalize(s.c - eye_);
+        const rc::Vec3 square =
+            glm::normalize(glm::cross(toCentre, std::abs(toCentre.x) < 0.9 ? rc::Vec3{1, 0, 0} : rc::Vec3{0, 1, 0}));
+        const double centre = tutorial::emptyConeAngle(eye_, axis, {rc::Sphere{s.c, 0.0}});
+        const double beside = tutorial::emptyConeAngle(eye_, square, {s});
+        return {std::max(0.0, centre), beside >= 0.0 ? M_PI_2 - beside : M_PI};
     }
     const rc::Sphere& sphere(int j) const {
         if (j < 0 || j >= size()) throw std::out_of_range("sphere " + std::to_string(j) + " of " + std::to_string(size()));
         ++tests_;
         return spheres_[j];
     }
-    const rc::Vec3& eye() const { return eye_; }
     long tests() const { return tests_; }
 
 private:
     const std::vector<rc::Sphere>& spheres_;
     rc::Vec3 eye_;
     mutable long tests_ = 0;
-};
-
-// ---- The caches the check runs itself, for comparison ---------------------------------
-
-// Speer, DeRose and Barsky's cylinder for a ray that hits nothing: the segment from the
-// eye to where it leaves the scene's bounding sphere, as thick as the gap to the nearest sphere
-class CylinderCache final : public tutorial::NothingCache {
-public:
-    explicit CylinderCache(const CountedSpheres& spheres) : spheres_(spheres), eye_(spheres.eye()) {
-        const int n = spheres.size();
-        for (int j = 0; j < n; ++j) bound_.c += spheres.sphere(j).c / double(n);
-        for (int j = 0; j < n; ++j) bound_.r = std::max(bound_.r, glm::length(spheres.sphere(j).c - bound_.c) + spheres.sphere(j).r);
-    }
-    tutorial::Known lookup(const rc::Vec3& d) override {
-        if (!(radius_ > 0.0)) return {};
-        const rc::Vec3 end = segmentEnd(d);
-        if (rc::segmentDistance(end, eye_, end_) <= radius_) return {true, -1};
-        return {};
-    }
-    void searched(const rc::Vec3& d, int object) override {
-        if (object >= 0) return;
-        end_ = segmentEnd(d);
-        radius_ = rc::kNoHit;
-        for (int j = 0; j < spheres_.size(); ++j) {
-            const rc::Sphere& s = spheres_.sphere(j);
-            radius_ = std::min(radius_, rc::segmentDistance(s.c, eye_, end_) - s.r);
-        }
-        radius_ *= 1.0 - 1e-12;
-    }
-
-private:
-    // Where the ray leaves the bounding sphere; its nearest point to the centre if it misses it
-    rc::Vec3 segmentEnd(const rc::Vec3& d) const {
-        const rc::Ray ray{eye_, d};
-        const rc::SphereRoots roots = rc::sphereRootsStable(ray, bound_);
-        return ray.at(roots.hit && roots.t1 > 0.0 ? roots.t1 : std::max(0.0, glm::dot(bound_.c - eye_, d)));
-    }
-    const CountedSpheres& spheres_;
-    rc::Vec3 eye_;
-    rc::Sphere bound_{rc::Vec3{0.0}, 0.0};
-    rc::Vec3 end_{0.0};
-    double radius_ = -1.0;
 };
 
 // ---- Driving a cache over a scene's eye rays in scanline order ------------------------
@@ -159,12 +118,14 @@ struct Scene {
     int width, height;
     std::vector<rc::Sphere> spheres;
     rc::Camera camera;
+    std::vector<int> truth;  ///< the sphere each eye ray hits first, -1 for none (recorded: oracles.h)
 };
 
 Scene loadScene(const std::string& name, int size) {
     const rc::Scene s = rc::makeBuiltin(name);
-    Scene out{name, size, size, {}, s.camera};
+    Scene out{name, size, size, {}, s.camera, {}};
     for (const rc::Object& o : s.objects) out.spheres.push_back(o.bound);
+    out.truth = tutorial::eyeHits(out.spheres, out.camera, size, size);
     return out;
 }
 
@@ -179,9 +140,7 @@ Run drive(const Scene& scene, Make make) {
     run.cost = double(run.setupTests) / n;
     const int pixels = scene.width * scene.height;
     run.kind.resize(pixels);
-    run.truth.resize(pixels);
-    for (int p = 0; p < pixels; ++p)
-        run.truth[p] = nearest(camera.primary(p % scene.width, p / scene.width), scene.spheres);
+    run.truth = scene.truth;
     for (int p = 0; p < pixels; ++p) {
         const rc::Ray ray = camera.primary(p % scene.width, p / scene.width);
         const int truth = run.truth[p];
@@ -318,8 +277,8 @@ TEST_CASE("basic: emptyConeAngle is the widest empty cone, and no ray inside it 
                 const double a = std::min(got, M_PI) * (1.0 - 1e-7), turn = 2.0 * M_PI * k / 8.0;
                 const rc::Vec3 ortho = std::cos(turn) * side + std::sin(turn) * glm::cross(axis, side);
                 const rc::Ray ray{apex, glm::normalize(std::cos(a) * axis + std::sin(a) * ortho)};
-                INFO(std::setprecision(17) << "a ray " << a << " radians from the axis hits sphere " << nearest(ray, spheres));
-                REQUIRE(nearest(ray, spheres) < 0);
+                INFO(std::setprecision(17) << "a ray " << a << " radians from the axis meets sphere " << anyMet(ray, spheres));
+                REQUIRE(anyMet(ray, spheres) < 0);
             }
             ++open;
         }
@@ -334,7 +293,7 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
                 "makes (n spheres, in any of its functions) as one more:\n");
     for (const Scene& scene : scenes()) {
         const double n = double(scene.spheres.size());
-        const Run cylinder = drive(scene, [](const CountedSpheres& s) { return std::make_unique<CylinderCache>(s); });
+        const tutorial::CylinderRow cylinder = tutorial::cylinderRow(scene.spheres, scene.camera, scene.width, scene.height);
         const tutorial::OneCone cone = oneCone(scene);
         const Run yours = drive(scene, [](const CountedSpheres& s) { return tutorial::makeNothingCache(s); });
         std::printf("%s: %zu spheres, %ld eye rays, %ld hit nothing, in %ld beam(s)\n", scene.name.c_str(),
@@ -343,7 +302,9 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
                     "its tests", "tests/answer", "after empty");
         std::printf("  %-20s %9ld %9ld %8.2f %9ld %9d %12s %13s\n", "none", yours.rays, yours.emptyRays,
                     double(yours.emptyRays) / double(std::max(1L, yours.emptyBeams)), yours.rays, 0, "-", "-");
-        printRow("cylinder of safety", cylinder);
+        std::printf("  %-20s %9.1f %9.1f %8.2f %9ld %9ld %12.2f %7ld/%ld\n", "cylinder of safety", cylinder.cost,
+                    cylinder.emptyCost, cylinder.searchesPerBeam, cylinder.searches, cylinder.tests, cylinder.testsPerAnswer,
+                    cylinder.afterEmptyAnswered, cylinder.afterEmpty);
         std::printf("  %-20s %9.1f %9.1f\n", "one empty cone", cone.cost, 2.0 * double(cone.emptySearches));
         printRow("yours", yours);
         const std::string path = draw(scene, yours, scene.name == "cube:4" ? "cube4" : scene.name == "cube:6" ? "cube6" : scene.name);
@@ -363,10 +324,8 @@ TEST_CASE("intermediate: your cache is exact, cheap, and beats the cylinder of s
             CHECK(yours.emptyCost < cylinder.emptyCost);
         }
         {
-            // The cylinder above is measured with tutorial 02's rc::segmentDistance: in a
-            // student build where that is still the stub it answers no ray and costs more than
-            // no cache, and beating it alone would pass a cache that never answers. This bar
-            // does not depend on another tutorial
+            // A bar of its own, beside the cylinder's: a cache must answer most of the rays
+            // that hit nothing
             INFO(std::setprecision(17) << scene.name << ": your cache costs " << yours.emptyCost
                                        << " complete searches on rays that hit nothing; no cache at all costs "
                                        << yours.emptyRays << ", and a cache must cost at most three quarters of that, "

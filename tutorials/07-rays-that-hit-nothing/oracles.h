@@ -25,6 +25,20 @@ struct OneCone {
 };
 OneCone oneCone(const std::vector<rc::Sphere>& spheres, const rc::Camera& camera, int width, int height);
 
+/// The sphere each eye ray of the image hits first, in scanline order (-1: none; equal
+/// distances: the lower index): the complete search's answers.
+std::vector<int> eyeHits(const std::vector<rc::Sphere>& spheres, const rc::Camera& camera, int width, int height);
+
+/// The cylinder of safety's row in the table of intermediate's yardsticks: Speer, DeRose and
+/// Barsky's cylinder for a ray that hits nothing (the segment from the eye to where the ray
+/// leaves the spheres' bounding sphere, as thick as the gap to the nearest sphere), counted
+/// as the check counts a cache (its constructor makes 3n tests, each new cylinder n).
+struct CylinderRow {
+    double cost = 0.0, emptyCost = 0.0, searchesPerBeam = 0.0, testsPerAnswer = 0.0;
+    long searches = 0, tests = 0, afterEmptyAnswered = 0, afterEmpty = 0;
+};
+CylinderRow cylinderRow(const std::vector<rc::Sphere>& spheres, const rc::Camera& camera, int width, int height);
+
 /// The 4-connected pieces of pixels whose eye rays hit nothing (truth[p] < 0): the beams
 /// of empty eye rays.
 long emptyBeams(int width, int height, const std::vector<int>& truth);

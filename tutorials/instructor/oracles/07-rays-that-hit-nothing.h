@@ -4,11 +4,13 @@
 // recording program's oracles.cpp (TUTORIAL_RECORD).
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "geometry/intersection.h"
+#include "geometry/safety_cylinder.h"
 #include "scene/camera.h"
 #include "search/query.h"
 #include "oracles.h"
@@ -93,6 +95,72 @@ inline long emptyBeams(int width, int height, const std::vector<int>& truth) {
     long beams = 0;
     for (int p = 0; p < width * height; ++p) beams += truth[p] < 0 && label[p] == p;
     return beams;
+}
+
+// The complete search's answer for every eye ray (tutorial::eyeHits)
+inline std::vector<double> eyeHits(const std::vector<rc::Sphere>& spheres, const rc::Camera& eye, int width, int height) {
+    const rc::RayGenerator camera(eye, width, height);
+    std::vector<double> out(std::size_t(width) * std::size_t(height));
+    for (int p = 0; p < width * height; ++p) out[std::size_t(p)] = nearest(camera.primary(p % width, p / width), spheres);
+    return out;
+}
+
+// The cylinder of safety's row (tutorial::cylinderRow), counted as the check's drive()
+// counts a cache: {cost, emptyCost, searchesPerBeam, testsPerAnswer, searches, tests,
+// afterEmptyAnswered, afterEmpty}. The cylinder for a ray that hits nothing is the segment
+// from the eye to where the ray leaves the spheres' bounding sphere (its nearest point to
+// the centre if it misses it), as thick as the gap to the nearest sphere; a later ray is
+// answered "nothing" when that segment's end stays inside it. Its lookups test no sphere;
+// the bounding sphere costs 3n tests (each sphere read once for the centre, and once for
+// its centre and once for its radius for the radius: as the check counted it when it ran
+// this cache itself), each new cylinder n.
+inline std::vector<double> cylinderRow(const std::vector<rc::Sphere>& spheres, const rc::Camera& eye, int width,
+                                       int height) {
+    const rc::RayGenerator camera(eye, width, height);
+    const int n = int(spheres.size());
+    const rc::Vec3 from = eye.from;
+    rc::Sphere bound{rc::Vec3{0.0}, 0.0};
+    for (const rc::Sphere& s : spheres) bound.c += s.c / double(n);
+    for (const rc::Sphere& s : spheres) bound.r = std::max(bound.r, glm::length(s.c - bound.c) + s.r);
+    auto segmentEnd = [&](const rc::Vec3& d) {
+        const rc::Ray ray{from, d};
+        const rc::SphereRoots roots = rc::sphereRootsStable(ray, bound);
+        return ray.at(roots.hit && roots.t1 > 0.0 ? roots.t1 : std::max(0.0, glm::dot(bound.c - from, d)));
+    };
+    rc::Vec3 end{0.0};
+    double radius = -1.0;
+    const long setupTests = 3L * n;
+    long searches = 0, searchedTests = 0, afterEmpty = 0, afterEmptyAnswered = 0;
+    double cost = double(setupTests) / double(n), emptyCost = 0.0;
+    std::vector<int> truth(std::size_t(width) * std::size_t(height));
+    for (int p = 0; p < width * height; ++p) truth[std::size_t(p)] = nearest(camera.primary(p % width, p / width), spheres);
+    for (int p = 0; p < width * height; ++p) {
+        const rc::Vec3 d = camera.primary(p % width, p / width).d;
+        const int hit = truth[std::size_t(p)];
+        const bool after = hit >= 0 && p % width > 0 && truth[std::size_t(p) - 1] < 0;
+        afterEmpty += after;
+        double rayCost = 0.0;
+        if (radius > 0.0 && rc::segmentDistance(segmentEnd(d), from, end) <= radius) {
+            if (hit >= 0) throw std::logic_error("the cylinder of safety answered nothing for a ray that hits a sphere");
+            afterEmptyAnswered += after;
+        } else {
+            ++searches;
+            rayCost += 1.0;
+            if (hit < 0) {
+                end = segmentEnd(d);
+                radius = rc::kNoHit;
+                for (const rc::Sphere& s : spheres) radius = std::min(radius, rc::segmentDistance(s.c, from, end) - s.r);
+                radius *= 1.0 - 1e-12;
+                searchedTests += n;
+                rayCost += double(n) / double(n);
+            }
+        }
+        cost += rayCost;
+        if (hit < 0) emptyCost += rayCost;
+    }
+    const long beams = emptyBeams(width, height, truth);
+    return {cost, emptyCost, beams ? emptyCost / double(beams) : 0.0, 0.0, double(searches),
+            double(setupTests + searchedTests), double(afterEmptyAnswered), double(afterEmpty)};
 }
 
 // The yardstick of the challenge (tutorial::oneCone): {searches, emptySearches, cost}
