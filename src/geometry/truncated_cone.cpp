@@ -35,7 +35,6 @@ namespace {
 // file (tutorial 06's hole): the rays that miss return before this call and pay nothing for it.
 [[gnu::noinline]] double nearestBetweenRims(double a, double h, double c, double disc, double s0, double ds,
                                             double height, bool fromThis, double scale) {
-    // [cone-roots]
     // The roots as the spheres take theirs (tutorial 06). Tangent at the origin's height
     // (both roots 0, or 0 / 0 when a is 0 too), neither counts below
     const QuadraticRoots stable = stableQuadraticRoots(a, h, c, disc);
@@ -55,7 +54,6 @@ namespace {
         if (s >= 0.0 && s <= height) return t;
     }
     return kNoHit;
-    // [cone-roots]
 }
 }  // namespace
 
