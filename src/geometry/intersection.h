@@ -28,6 +28,19 @@ struct SphereRoots {
 /// Stable roots (see file comment). `ray.d` must be a unit vector.
 SphereRoots sphereRootsStable(const Ray& ray, const Sphere& s);
 
+/// The two roots of `a t^2 + 2 h t + c = 0`, not sorted: `larger` is the one of larger
+/// magnitude, `smaller` the other (the one that is 0 when `c` is). Part of tutorial 06's hole.
+struct QuadraticRoots {
+    double larger = kNoHit;
+    double smaller = kNoHit;
+};
+
+/// The roots of `a t^2 + 2 h t + c = 0` (`a` != 0), given its discriminant `disc = h^2 - a c`,
+/// which must be >= 0: the caller forms it, each surface in the way that keeps its digits.
+/// sphereRootsStable() and the truncated cone (rc::intersectTruncatedCone()) take their roots
+/// from here. When `larger` is 0, `smaller` is 0 too.
+QuadraticRoots stableQuadraticRoots(double a, double h, double c, double disc);
+
 /// Textbook roots `-b +- sqrt(b^2 - c)`: kept for teaching and for the stability
 /// comparison; it loses every digit when the sphere is small and far away.
 SphereRoots sphereRootsTextbook(const Ray& ray, const Sphere& s);

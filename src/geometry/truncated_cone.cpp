@@ -29,6 +29,34 @@ std::optional<std::string> makeTruncatedCone(const Vec3& base, double baseRadius
     return std::nullopt;
 }
 
+namespace {
+// The nearest root in front of the origin between the two rims, once the ray's line meets
+// the cone's surface. Apart from intersectTruncatedCone() because its roots come from another
+// file (tutorial 06's hole): the rays that miss return before this call and pay nothing for it.
+[[gnu::noinline]] double nearestBetweenRims(double a, double h, double c, double disc, double s0, double ds,
+                                            double height, bool fromThis, double scale) {
+    // The roots as the spheres take theirs (tutorial 06). Tangent at the origin's height
+    // (both roots 0, or 0 / 0 when a is 0 too), neither counts below
+    const QuadraticRoots stable = stableQuadraticRoots(a, h, c, disc);
+    double roots[2] = {stable.larger, stable.smaller};
+    // A ray starting on the surface: the smaller root is the one at its origin (c is 0
+    // there, up to rounding); only the other can be a hit, and only if it lies clear of
+    // the origin
+    if (fromThis) {
+        roots[1] = kNoHit;
+        if (!(std::abs(roots[0]) > 1e-9 * scale)) return kNoHit;
+    }
+    if (roots[1] < roots[0]) std::swap(roots[0], roots[1]);
+    // The nearest root in front of the origin, between the two rims
+    for (const double t : roots) {
+        if (!(t > 0.0) || !std::isfinite(t)) continue;
+        const double s = s0 + t * ds;
+        if (s >= 0.0 && s <= height) return t;
+    }
+    return kNoHit;
+}
+}  // namespace
+
 double intersectTruncatedCone(const Ray& ray, const TruncatedCone& cone, bool fromThis) {
     // [cone-hit]
     // Split origin offset and direction into parts along the axis and across it
@@ -47,25 +75,9 @@ double intersectTruncatedCone(const Ray& ray, const TruncatedCone& cone, bool fr
     const Vec3 x = glm::cross(wp, dp);
     const double disc = glm::dot(e, e) - glm::dot(x, x);
     if (disc < 0.0) return kNoHit;
-    // Stable roots: q/a and c/q, never a difference of nearly equal numbers
-    const double q = h > 0.0 ? -h - std::sqrt(disc) : -h + std::sqrt(disc);
-    if (q == 0.0) return kNoHit;  // tangent at the origin's height
-    double roots[2] = {q / a, c / q};
-    // A ray starting on the surface: c / q is the root at its origin (c is 0 there, up to
-    // rounding); only the other can be a hit, and only if it lies clear of the origin
-    if (fromThis) {
-        roots[1] = kNoHit;
-        const double scale = glm::length(wp) + std::abs(r0) + cone.height;
-        if (!(std::abs(roots[0]) > 1e-9 * scale)) return kNoHit;
-    }
-    if (roots[1] < roots[0]) std::swap(roots[0], roots[1]);
-    // The nearest root in front of the origin, between the two rims
-    for (const double t : roots) {
-        if (!(t > 0.0) || !std::isfinite(t)) continue;
-        const double s = s0 + t * ds;
-        if (s >= 0.0 && s <= cone.height) return t;
-    }
-    return kNoHit;
+    // The size of the problem at the origin, for a ray that starts on the surface
+    const double scale = fromThis ? glm::length(wp) + std::abs(r0) + cone.height : 0.0;
+    return nearestBetweenRims(a, h, c, disc, s0, ds, cone.height, fromThis, scale);
     // [cone-hit]
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -16,6 +17,13 @@ void basis(const Vec3& n, Vec3& e1, Vec3& e2) {
     const Vec3 other = std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     e1 = glm::normalize(glm::cross(n, other));
     e2 = glm::cross(n, e1);
+}
+
+/// Direction i of n spread evenly over the unit sphere (a Fibonacci lattice).
+Vec3 spreadDirection(int i, int n) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n, rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = 2.399963229728653 * i;
+    return {rho * std::cos(phi), rho * std::sin(phi), z};
 }
 }  // namespace
 
@@ -113,19 +121,17 @@ Outline ImageProjector::silhouette(const Sphere& s, int samples) const {
 }
 
 Outline ImageProjector::hull(Sphere a, Sphere b, int samples) const {
+    const Hull h(a, b);
     // A student build with tutorial 03 open draws the student's own rc::Hull: its boundary
     // found by bisection on Hull::distance() along rays from a point inside it, projected
     if (isStudents(3)) {
-        const Hull h(a, b);
         Vec3 m = (a.c + b.c) * 0.5;
         if (h.distance(m) > 0.0) m = a.r >= b.r ? a.c : b.c;
         const double reach = 2.0 * (glm::length(b.c - a.c) + a.r + b.r) + 1.0;
         Outline pts;
         const int n = 8 * samples;
-        for (int i = 0; i < n; ++i) {  // directions spread evenly over the sphere
-            const double z = 1.0 - (2.0 * i + 1.0) / n, rho = std::sqrt(std::max(0.0, 1.0 - z * z));
-            const double phi = 2.399963229728653 * i;
-            const Vec3 u{rho * std::cos(phi), rho * std::sin(phi), z};
+        for (int i = 0; i < n; ++i) {
+            const Vec3 u = spreadDirection(i, n);
             double lo = 0.0, hi = reach;
             if (h.distance(m + hi * u) <= 0.0) continue;
             for (int k = 0; k < 48; ++k) (h.distance(m + 0.5 * (lo + hi) * u) <= 0.0 ? lo : hi) = 0.5 * (lo + hi);
@@ -139,13 +145,8 @@ Outline ImageProjector::hull(Sphere a, Sphere b, int samples) const {
     if (ia && ib) return {};
     if (ia) return silhouette(b, samples);
     if (ib) return silhouette(a, samples);
-    // The hull of two balls is the union of the balls between them (centres and radii
-    // blended): when one of those holds the eye, the hull fills the whole view
-    constexpr int kSteps = 24;
-    for (int k = 1; k < kSteps; ++k) {
-        const double f = double(k) / kSteps;
-        if (holdsEye({a.c + (b.c - a.c) * f, a.r + (b.r - a.r) * f})) return whole();
-    }
+    // The hull holds the eye between the two: it fills the whole view
+    if (h.distance(eye_) <= 0.0) return whole();
     Outline pts;
     const bool inFront = depth(a.c) - a.r >= near_ && depth(b.c) - b.r >= near_;
     if (inFront) {
@@ -153,10 +154,21 @@ Outline ImageProjector::hull(Sphere a, Sphere b, int samples) const {
         sphereOutline(a, samples, pts);
         sphereOutline(b, samples, pts);
     } else {
-        // Clipped by the near plane: the outlines of the blended balls' front parts
-        for (int k = 0; k <= kSteps; ++k) {
-            const double f = double(k) / kSteps;
-            sphereOutline({a.c + (b.c - a.c) * f, a.r + (b.r - a.r) * f}, samples / 2, pts);
+        // Clipped by the near plane. The hull is the convex hull of the two spheres' points,
+        // so its part in front of the plane is that of the points in front and of the
+        // crossings of the segments joining points on either side: sampled on both spheres
+        std::vector<Vec3> front, behind;
+        for (const Sphere& s : {a, b}) {
+            const int n = s.r > 0.0 ? 2 * samples : 1;
+            for (int i = 0; i < n; ++i) {
+                const Vec3 p = s.c + s.r * spreadDirection(i, n);
+                (depth(p) >= near_ ? front : behind).push_back(p);
+            }
+        }
+        for (const Vec3& p : front) {
+            pts.push_back(image(p));
+            const double dp = depth(p);
+            for (const Vec3& q : behind) pts.push_back(image(p + (q - p) * ((dp - near_) / (dp - depth(q)))));
         }
     }
     if (pts.size() < 3) return pts;

@@ -13,6 +13,7 @@
 #include "geometry/cone.h"
 #include "../random_scenes.h"
 #include "render/render_session.h"
+#include "scene/builtin_scenes.h"
 #include "search/blocker_cache.h"
 #include "../uniform.h"
 
@@ -116,4 +117,19 @@ TEST_CASE("blocker lists hold the objects a second computation of the hull finds
     REQUIRE(found > 0);
     REQUIRE(listed > found);   // the lists are not empty
     REQUIRE(borderline < 10);  // the tolerance decides almost nothing
+}
+
+TEST_CASE("trio's third sphere lies wholly inside the hull of the other two", "[builtin][hull]") {
+    const Scene s = makeBuiltin("trio");
+    REQUIRE(s.spheres.size() == 3);
+    const Sphere &a = s.spheres[0], &b = s.spheres[1], &c = s.spheres[2];
+    // The hull of two balls holds every ball between them (centres and radii blended):
+    // the third lies wholly inside one of those
+    bool inside = false;
+    for (int k = 0; k <= 100; ++k) {
+        const double f = k / 100.0;
+        const Sphere m{a.c + (b.c - a.c) * f, a.r + (b.r - a.r) * f};
+        inside = inside || glm::length(c.c - m.c) + c.r <= m.r;
+    }
+    CHECK(inside);
 }

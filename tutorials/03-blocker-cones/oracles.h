@@ -1,7 +1,7 @@
 #pragma once
 // Tutorial 03's oracles: what the check compares your hull with. Their answers are data
-// (oracle_data.txt, oracle_data.h), recorded by the instructor's oracles: the hull of two
-// spheres as the union of the spheres between them, searched in long double.
+// (oracle_data.txt, oracle_data.h), recorded by the instructor's oracles, which compute the
+// hull apart from the library, in long double.
 #include <string>
 #include <vector>
 

@@ -1,5 +1,6 @@
-// Tutorial 06's check: rc::sphereRootsStable (your tutorials/06-numerical-stability/exercise.cpp
-// in a student build) against an independent oracle, roots found by bisection in long double
+// Tutorial 06's check: rc::sphereRootsStable and rc::stableQuadraticRoots (your
+// tutorials/06-numerical-stability/exercise.cpp in a student build) against independent oracles:
+// quadratics built from known roots, and roots found by bisection in long double
 // and polished in quad precision (its answers are data: oracles.h, oracle_data.txt), on ordinary cases (where the textbook
 // formula is fine too) and on stiff ones (where it is not).
 #include <iomanip>
@@ -118,6 +119,30 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
         // about r / t0 units in the last place, up to a million here
         REQUIRE(std::abs(got.t0 - want.t0) <= 1e-12 * want.t0);
         REQUIRE(std::abs(got.t1 - want.t1) <= 1e-12 * want.t1);
+    }
+}
+
+TEST_CASE("stableQuadraticRoots finds both roots of quadratics whose roots are known", "[tutorial06]") {
+    // a (t - near)(t - far) = a t^2 + 2 h t + c, with disc = h^2 - a c = (a (far - near) / 2)^2:
+    // the roots are known without solving anything. a, near and far have few bits, so h, c
+    // and disc are rounded at most twice each, which moves each root by a few units in the
+    // last place. far is up to 2^62 times near: the textbook's near root loses that many.
+    tutorial::Random rnd(6);
+    for (int i = 0; i < 2000; ++i) {
+        const double a = double(1 + rnd.index(16)) * (rnd.chance(0.5) ? 1.0 : -1.0);
+        const double near = std::ldexp(double(1 + rnd.index(1024)), -int(rnd.index(21))) * (rnd.chance(0.5) ? 1.0 : -1.0);
+        const double far = std::ldexp(double(1 + rnd.index(1024)), int(rnd.index(21))) * (rnd.chance(0.5) ? 1.0 : -1.0) *
+                           (rnd.chance(0.25) ? 1.0 : 4096.0);
+        if (std::abs(far) < 4.0 * std::abs(near)) continue;
+        const double h = -0.5 * a * (near + far), c = a * near * far;
+        const double half = 0.5 * a * (far - near), disc = half * half;
+        const rc::QuadraticRoots got = rc::stableQuadraticRoots(a, h, c, disc);
+        INFO(std::setprecision(17) << a << " t^2 + 2 (" << h << ") t + " << c << " = 0, disc " << disc
+                                   << ": roots " << far << " and " << near << "; yours: larger " << got.larger
+                                   << ", smaller " << got.smaller);
+        // Each root to 1e-12 of itself (the truncated cones take their roots from here too)
+        REQUIRE(std::abs(got.larger - far) <= 1e-12 * std::abs(far));
+        REQUIRE(std::abs(got.smaller - near) <= 1e-12 * std::abs(near));
     }
 }
 

@@ -1,4 +1,5 @@
 // Tutorial 06, a wrong answer the check must reject: the stable discriminant, but both roots as -b -+ sqrt(disc) (no Vieta)
+// KEEP SOLUTION
 // BEGIN ANSWER
     const rc::Vec3 f = ray.o - s.c;
     const double b = glm::dot(f, ray.d);

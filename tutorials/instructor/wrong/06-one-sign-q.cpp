@@ -1,15 +1,7 @@
-// Tutorial 06, a wrong answer the check must reject: q = -b + sqrt(disc) whatever the sign of b
+// Tutorial 06, a wrong answer the check must reject: stableQuadraticRoots with q = -h + sqrt(disc)
+// whatever the sign of h (sphereRootsStable as the reference has it, so its roots come from here)
 // BEGIN ANSWER
-    const rc::Vec3 f = ray.o - s.c;
-    const double b = glm::dot(f, ray.d);
-    // r^2 - |l|^2 with l the centre's perpendicular offset: no large squares cancel
-    const rc::Vec3 l = f - b * ray.d;
-    const double disc = s.r * s.r - glm::dot(l, l);
-    if (disc < 0.0) return {};
-    // q = -b - sign(b) sqrt(disc) adds two numbers of the same sign
-    const double q = -b + std::sqrt(disc);
-    const double c = glm::dot(f, f) - s.r * s.r;
-    double t0 = q != 0.0 ? c / q : 0.0, t1 = q;  // Vieta: t0 t1 = c
-    if (t0 > t1) std::swap(t0, t1);
-    return {true, t0, t1};
+    const double q = -h + std::sqrt(disc);  // the sign of -h forgotten
+    return {q / a, (q != 0.0) ? c / q : 0.0};
 // END ANSWER
+// KEEP SOLUTION

@@ -1,4 +1,5 @@
 // Tutorial 06, a wrong answer the check must reject: no swap: t0 > t1 when the origin is past the centre
+// KEEP SOLUTION
 // BEGIN ANSWER
     const rc::Vec3 f = ray.o - s.c;
     const double b = glm::dot(f, ray.d);

@@ -1,4 +1,5 @@
 // Tutorial 06, a wrong answer the check must reject: Vieta for the near root, but the textbook discriminant b*b - c
+// KEEP SOLUTION
 // BEGIN ANSWER
     const rc::Vec3 f = ray.o - s.c;
     const double b = glm::dot(f, ray.d);
