@@ -394,6 +394,15 @@ TEST_CASE("the cache tree flushes the entries beneath a miss", "[cache][tree]") 
     tree.flushBelow(0);
     REQUIRE(tree.entry(refl).state == CacheEntry::State::Flushed);
     REQUIRE(tree.entry(refr).state == CacheEntry::State::Flushed);
+    // A path made later, two steps beneath the eye, is flushed with them; the eye's own is not
+    const int deep = tree.child(refr, RayKind::Reflection);
+    for (int n : {0, refl, shadow, refr, deep}) tree.entry(n).state = CacheEntry::State::Loaded;
+    tree.flushBelow(refr);
+    REQUIRE(tree.entry(deep).state == CacheEntry::State::Flushed);
+    REQUIRE(tree.entry(shadow).state == CacheEntry::State::Loaded);
+    tree.flushBelow(0);
+    REQUIRE(tree.entry(0).state == CacheEntry::State::Loaded);
+    for (int n : {refl, shadow, refr, deep}) REQUIRE(tree.entry(n).state == CacheEntry::State::Flushed);
 }
 
 TEST_CASE("a tiled polygon is listed when a tile meets the hull: the tiles under it decide", "[cache][blocker][tiles]") {

@@ -26,8 +26,10 @@ int CacheTree::make(int parent, RayKind kind, int light, int sample) {
         entries_.emplace_back();
     }
     canonical_.push_back(twin >= 0 ? twin : id);
+    const int entry = n.entry;
     nodes_.push_back(std::move(n));
     if (parent >= 0) nodes_[parent].children.push_back(id);
+    for (int up = parent; up >= 0; up = nodes_[up].parent) nodes_[up].entriesBelow.push_back(entry);
     return id;
 }
 
@@ -47,11 +49,10 @@ int CacheTree::child(int node, RayKind kind, int light, int sample) {
 
 void CacheTree::flushBelow(int node) {
     // [flush-below]
-    // A miss at a parent: the children's rays now start somewhere else
-    for (int c : nodes_[node].children) {
-        CacheEntry& e = entry(c);
+    // A miss at a parent: the rays of the paths beneath now start somewhere else
+    for (int k : nodes_[node].entriesBelow) {
+        CacheEntry& e = entries_[std::size_t(k)];
         if (e.state == CacheEntry::State::Loaded) e.state = CacheEntry::State::Flushed;
-        flushBelow(c);
     }
     // [flush-below]
 }
@@ -71,7 +72,7 @@ std::string CacheTree::label(int node) const {
 std::size_t CacheTree::bytes() const {
     std::size_t b = nodes_.size() * sizeof(Node) + entries_.size() * sizeof(CacheEntry) +
                     (roots_.size() + canonical_.size()) * sizeof(int);
-    for (const Node& n : nodes_) b += n.children.size() * sizeof(int);
+    for (const Node& n : nodes_) b += (n.children.size() + n.entriesBelow.size()) * sizeof(int);
     return b;
 }
 

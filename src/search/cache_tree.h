@@ -30,6 +30,9 @@ public:
         int depth = 1;     ///< the eye ray is depth 1
         int entry = 0;     ///< its cache entry (shared between samples under SampleEntries::Shared)
         std::vector<int> children;
+        /// The entries of every path beneath it, so that a flush is one loop, not a walk
+        /// of the subtree (a miss in scanline order flushes on every miss)
+        std::vector<int> entriesBelow;
     };
 
     explicit CacheTree(SampleEntries sharing = SampleEntries::PerSample);

@@ -120,6 +120,7 @@ DirectionLists::DirectionLists(const Scene& scene, const CompleteSearch& search,
                                bool siteOrders)
     : scene_(scene), search_(search), sites_(sites) {
     slack_ = 1e-9 * scene.extent();
+    cellsAt_.assign(std::size_t(sites.sites()), kNoCells);
     if (siteOrders && std::size_t(scene.size()) * std::size_t(sites.sites()) <= kMostOrderEntries) {
         orderAt_.assign(std::size_t(sites.sites()), kNoOrder);
         bounds_.reserve(scene.objects.size());
@@ -211,13 +212,19 @@ const DirectionList& DirectionLists::get(int site, const Vec3& d, std::uint32_t&
     const int c = cell(d, side(site));
     // A path's misses mostly leave the same site in the same cell as its last one
     if (memo < lists_.size() && lists_[memo].origin == site && lists_[memo].target == c) return lists_[memo];
-    const std::uint64_t key = std::uint64_t(site) * kMostCells + std::uint64_t(c);
-    if (const std::uint32_t number = table_.find(key); number != ListTable::kNone) {
+    // Else the site's own cells, read directly
+    std::uint32_t& first = cellsAt_[std::size_t(site)];
+    if (first == kNoCells) {
+        const int s = side(site);
+        first = std::uint32_t(cellLists_.size());
+        cellLists_.resize(cellLists_.size() + std::size_t(6 * s * s), kNoList);
+    }
+    std::uint32_t& number = cellLists_[first + std::uint32_t(c)];
+    if (number != kNoList) {
         memo = number;
         return lists_[number];
     }
-    const std::uint32_t number = std::uint32_t(lists_.size());
-    table_.insert(key, number);
+    number = std::uint32_t(lists_.size());
     memo = number;
     DirectionList& list = lists_.emplace_back();
     list.start = arena_.mark();
@@ -287,7 +294,8 @@ void DirectionLists::truncate(std::size_t n) {
     if (n > lists_.size()) throw std::logic_error("DirectionLists::truncate: cannot grow");
     if (n < lists_.size()) arena_.rewind(lists_[n].start);
     lists_.resize(n);
-    table_.keepBelow(std::uint32_t(n));
+    for (std::uint32_t& number : cellLists_)
+        if (number != kNoList && number >= n) number = kNoList;
 }
 
 }  // namespace rc

@@ -16,13 +16,11 @@
 /// blocker list, and kept. This is in the spirit of Arvo and Kirk's ray classification
 /// (1987), a year after the paper, grown lazily from the rays that ask.
 #include <cstdint>
-#include <deque>
 #include <span>
 #include <vector>
 
 #include "search/blocker_lists.h"
 #include "search/list_arena.h"
-#include "search/list_table.h"
 
 namespace rc {
 
@@ -81,7 +79,6 @@ private:
         Vec3 axis{0.0};
         double cosHalf = 1.0;
     };
-    static constexpr std::uint64_t kMostCells = 6 * kEyeCellsPerSide * kEyeCellsPerSide;
     static CellCone cellCone(int cell, int side);
     /// Cells per side of a face around `site`.
     int side(int site) const;
@@ -98,8 +95,13 @@ private:
     const CompleteSearch& search_;
     const BlockerLists& sites_;
     double slack_;
-    std::deque<DirectionList> lists_;
-    ListTable table_;
+    std::vector<DirectionList> lists_;
+    /// Each site's cells, read directly: per site, where its cells' list numbers start in
+    /// cellLists_ (kNoCells until one of its cells is met); there, each cell's list number
+    /// or kNoList. No hashing: a site has only 6 side^2 cells
+    std::vector<std::uint32_t> cellsAt_;
+    std::vector<std::uint32_t> cellLists_;
+    static constexpr std::uint32_t kNoCells = std::uint32_t(-1), kNoList = std::uint32_t(-1);
     /// The lists' objects and reaches, in large blocks (no two allocations per list)
     ListArena arena_;
     /// The sites' orders and aims below, in blocks of their own: a truncate keeps them
