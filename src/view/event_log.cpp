@@ -65,12 +65,13 @@ void EventLog::dropRays() {
 
 void EventLog::push_back(const EventRecord& given) {
     // Without its ray, the event reads back as it is stored: o and d zero (so every event's
-    // origin is the one before it, and costs nothing), and t none but a shadow ray's
+    // origin is the one before it, and costs nothing), and t none (its ray's answer, the
+    // object it hit, gives it again)
     EventRecord r = given;
     if (dropRays_) {
         std::fill(std::begin(r.o), std::end(r.o), 0.0f);
         r.d[0] = r.d[1] = 0;
-        if (r.rayKind() != rc::RayKind::Shadow) r.t = kNone;
+        r.t = kNone;
     }
     // [encode]
     // Against the event before it in its group: the first of a group against nothing
