@@ -77,8 +77,9 @@ public:
     }
 
 private:
-    /// Bytes a chunk holds: an event is never split between two.
-    static constexpr std::size_t kChunk = std::size_t(1) << 20;
+    /// Bytes a chunk holds: an event is never split between two. Small enough that the
+    /// last chunk's unused end is nothing beside a render's log (about 5 bytes an event).
+    static constexpr std::size_t kChunk = std::size_t(1) << 16;
     /// The most bytes one event takes.
     static constexpr std::size_t kMaxEvent = 96;
 
