@@ -185,6 +185,8 @@ private:
         o.band = band < 0 ? kAutoBand : band;
         // The page has no Step back: one checkpoint, at step 0
         config.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
+        // and shows of the per-pixel tallies only the tests heatmap and which pixels were traced
+        config.keepTallies = false;
         state_ = std::make_unique<SessionState>(std::move(config));
         projector_ = std::make_unique<ImageProjector>(state_->scene().camera, state_->camera());
     }

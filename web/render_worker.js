@@ -11,6 +11,7 @@ function renderWorkerMain(self, RayCache) {
     running: null,   // 'play' or 'end' while a run goes on
     runStart: 0,     // when the run to the end was asked for (performance.now())
     selected: null,  // the pixel (and path) selected in both renders: {x, y, path}
+    spares: [],      // picture buffers the page has drawn and given back, to fill again
     // What the page shows: which overlays, the heatmap, and the image rectangle they are clipped to
     view: { cylinder: false, hull: false, frontier: false, misses: false, heatmap: false, clip: null },
   };
@@ -20,11 +21,14 @@ function renderWorkerMain(self, RayCache) {
 
 // What the page draws of one render: its picture at image size, made by the core (the
 // image or the heatmap up to `top`, regions, misses), and the shapes and key of the ray
-// in focus. The image's bytes only once it is complete, for its hash.
-function workerPicture(w, r, buffers, top) {
+// in focus. The image's bytes only once it is complete, for its hash (`hashed`: the page
+// hashes the first render's only).
+function workerPicture(w, r, buffers, top, hashed) {
   const view = w.view;
-  const layer = new Uint8ClampedArray(r.picture(view.heatmap, top, view.misses, view.frontier));
-  const image = r.done() ? r.image().slice() : null;
+  const picture = r.picture(view.heatmap, top, view.misses, view.frontier);
+  const layer = workerSpare(w, picture.length);
+  layer.set(picture);
+  const image = hashed && r.done() ? r.image().slice() : null;
   buffers.push(layer.buffer);
   if (image) buffers.push(image.buffer);
   const width = r.width(), height = r.height();
@@ -42,6 +46,13 @@ function workerPicture(w, r, buffers, top) {
   };
 }
 
+// A buffer of `n` bytes for a picture: one the page gave back, else a new one. A run sends
+// a picture every frame: filling the same two buffers again leaves the page no garbage
+function workerSpare(w, n) {
+  const i = w.spares.findIndex((b) => b.byteLength === n);
+  return new Uint8ClampedArray(i < 0 ? new ArrayBuffer(n) : w.spares.splice(i, 1)[0]);
+}
+
 // The compared render goes to the first's step: every render has the same rays, so
 // when the first is done, so is the second
 function workerSyncCompare(w) {
@@ -57,10 +68,10 @@ function workerFrame(w, extra) {
   workerSyncCompare(w);
   // One heatmap scale for both renders side by side
   const top = w.view.heatmap ? Math.max(w.render.heatTop(), w.compare ? w.compare.heatTop() : 1) : 1;
-  const first = workerPicture(w, w.render, buffers, top);
+  const first = workerPicture(w, w.render, buffers, top, true);
   // The page lists the ray tree of the first render only
   first.rayTree = JSON.parse(w.render.rayTree());
-  const second = w.compare ? workerPicture(w, w.compare, buffers, top) : null;
+  const second = w.compare ? workerPicture(w, w.compare, buffers, top, false) : null;
   if (second) second.compareCaption = w.render.compareCaption(w.compare);
   w.self.postMessage(Object.assign({ type: 'frame' }, first, {
     compare: second, progress: w.render.progress(), running: w.running,
@@ -166,7 +177,9 @@ function workerStep(w, m) {
 }
 
 function workerMessage(w, m) {
-  if (m.type === 'view') {
+  if (m.type === 'spare') {
+    w.spares = w.spares.concat(m.buffers).slice(-2);  // two: the first render's and the compared one's
+  } else if (m.type === 'view') {
     w.view = m.view;
     if (w.render) workerFrame(w);
   } else if (m.type === 'claims') {
@@ -195,5 +208,5 @@ function workerLoaded(w, module) {
 }
 
 // What the page puts in the worker's source, besides raycache.js's factory
-const renderWorkerParts = [renderWorkerMain, workerPicture, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
+const renderWorkerParts = [renderWorkerMain, workerPicture, workerSpare, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
                            workerClaims, workerOpen, workerStep, workerMessage, workerLoaded];

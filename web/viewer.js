@@ -9,8 +9,9 @@ const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
 const canvas = $('canvas');
 const context = canvas.getContext('2d');
-const layer = document.createElement('canvas');  // the picture at image size
-const layerContext = layer.getContext('2d');
+// The pictures at image size, the first render's and the compared one's: a frame's bytes are
+// put in them when it comes, and not kept
+const layers = [document.createElement('canvas'), document.createElement('canvas')];
 let last = null;        // the last frame the worker sent
 let dropped = null;     // {name, text} of a dropped NFF file
 let worker = null;
@@ -124,6 +125,7 @@ function onMessage(m) {
     showError(m.message);
   } else if (m.type === 'frame') {
     last = m;
+    paintLayers(m);
     if (m.opened && zoomAbout > 0) zoomView();
     draw();
     showStatistics(m.statistics, m.compare && m.compare.statistics);
@@ -137,7 +139,9 @@ function onMessage(m) {
     if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
     if (m.runMs !== undefined && m.runMs !== null)
       $('timing').textContent = 'ran to the end in ' + m.runMs.toFixed(1) + ' ms';
+    // The image's bytes are read for their hash only: not kept with the frame
     if (m.done && m.image) writeHash(m.image);
+    m.image = null;
   }
 }
 
@@ -250,10 +254,20 @@ function fillScenes(list) {
 
 // ---- Drawing ---------------------------------------------------------------------------
 // The picture at image size, as the core made it (the image or the heatmap, the regions
-// of the fill, the misses)
-function paintLayer(m) {
-  if (layer.width !== m.width || layer.height !== m.height) { layer.width = m.width; layer.height = m.height; }
-  layerContext.putImageData(new ImageData(m.layer, m.width, m.height), 0, 0);
+// of the fill, the misses), put in the layers; its bytes go back to the worker to be filled
+// again
+function paintLayers(m) {
+  const spare = [];
+  [m, m.compare].forEach((p, k) => {
+    const layer = layers[k];
+    const [width, height] = p ? [p.width, p.height] : [0, 0];  // none: no memory held for it
+    if (layer.width !== width || layer.height !== height) { layer.width = width; layer.height = height; }
+    if (!p) return;
+    layer.getContext('2d').putImageData(new ImageData(p.layer, width, height), 0, 0);
+    spare.push(p.layer.buffer);
+    p.layer = null;
+  });
+  worker.postMessage({ type: 'spare', buffers: spare }, spare);
 }
 
 let drawnShapes = 0;
@@ -286,18 +300,17 @@ function draw() {
     context.fillRect(left, 0, paneWidth, H);
     const scale = paneWidth / (v[2] - v[0]);
     context.setTransform(scale, 0, 0, scale, left - v[0] * scale, -v[1] * scale);
-    drawPane(p, dpr / scale);
+    drawPane(p, k, dpr / scale);
     context.restore();
   });
   $('overlay-count').textContent = drawnShapes;
   $('overlay-roles').textContent = [...drawnRoles].sort().join(',');
 }
 
-// One render, in image coordinates; `px` is one CSS pixel in image units
-function drawPane(m, px) {
-  paintLayer(m);
+// One render (the `k`th pane), in image coordinates; `px` is one CSS pixel in image units
+function drawPane(m, k, px) {
   context.imageSmoothingEnabled = false;
-  context.drawImage(layer, 0, 0);
+  context.drawImage(layers[k], 0, 0);
   for (const shape of m.shapes) {
     if (drawShape(shape, px)) { ++drawnShapes; drawnRoles.add(shape.role); }
   }

@@ -240,7 +240,7 @@ std::optional<ClaimValue> readQuantity(const ClaimPane& pane, const std::string&
     if (name == "pixels") return number(double(s.width()) * s.height());
     if (name == "traced_pixels") {
         int n = 0;
-        for (int px = 0; px < s.width() * s.height(); ++px) n += s.recorder().firstVisit(px) >= 0 ? 1 : 0;
+        for (int px = 0; px < s.width() * s.height(); ++px) n += s.recorder().visited(px) ? 1 : 0;
         return number(n);
     }
     if (name == "queued") return number(double(session.order().frontier().queued.size()));

@@ -47,6 +47,15 @@ void getRaw(const std::uint8_t*& p, T& v) {
 // flags (3), no hit distance (1), region changed (1), step (2: same, one more, coded), raw (1)
 enum : std::uint8_t { kSameOrigin = 0x80, kNoT = 0x08, kRegionChanged = 0x10, kRawHeader = 0x80 };
 enum : std::uint8_t { kStepSame = 0, kStepNext = 1, kStepCoded = 2 };
+// The first byte: which of the numbers after it are not there, being zero (or one): in a
+// fill, neighbouring rays mostly follow the same path, hit and leave the same objects and
+// look as far back for their pixel's previous ray. kHeaderSame: no header either, the
+// event is of the kind, decision, reason, flags, origin, region and hit distance (none or
+// not) of the one before, one step after it
+enum : std::uint8_t {
+    kPixelSame = 0x01, kNodeSame = 0x02, kHitSame = 0x04, kOriginSame = 0x08, kNoTests = 0x10, kBackSame = 0x20,
+    kHeaderSame = 0x40, kOneTest = 0x80
+};
 constexpr float kNone = -1.0f;
 // How far back the previous event of event `index` is: 0 for none, 1 for one that is not
 // before it (kept as it is), else index - previous + 1
@@ -65,12 +74,13 @@ void EventLog::dropRays() {
 
 void EventLog::push_back(const EventRecord& given) {
     // Without its ray, the event reads back as it is stored: o and d zero (so every event's
-    // origin is the one before it, and costs nothing), and t none but a shadow ray's
+    // origin is the one before it, and costs nothing), and t none (its ray's answer, the
+    // object it hit, gives it again)
     EventRecord r = given;
     if (dropRays_) {
         std::fill(std::begin(r.o), std::end(r.o), 0.0f);
         r.d[0] = r.d[1] = 0;
-        if (r.rayKind() != rc::RayKind::Shadow) r.t = kNone;
+        r.t = kNone;
     }
     // [encode]
     // Against the event before it in its group: the first of a group against nothing
@@ -83,26 +93,39 @@ void EventLog::push_back(const EventRecord& given) {
     const bool noT = std::memcmp(&r.t, &kNone, sizeof r.t) == 0;
     const std::int64_t step = std::int64_t(r.step) - b.step;
     const std::uint8_t stepCode = step == 0 ? kStepSame : step == 1 ? kStepNext : kStepCoded;
+    const bool headerSame = r.kind == b.kind && r.decision == b.decision && r.reason == b.reason &&
+                            r.flags == b.flags && sameOrigin && noT == (std::memcmp(&b.t, &kNone, sizeof b.t) == 0) &&
+                            r.region == b.region && stepCode == kStepNext;
+    std::uint8_t& same = *p++;
+    same = headerSame ? kHeaderSame : 0;
     const bool narrow = r.kind < 4 && r.decision < 4 && r.reason < 8 && r.flags < 8;
-    *p++ = narrow ? std::uint8_t(r.kind | r.decision << 2 | r.reason << 4 | (sameOrigin ? kSameOrigin : 0)) : 0;
-    *p++ = std::uint8_t((narrow ? r.flags : 0) | (noT ? kNoT : 0) | (r.region != b.region ? kRegionChanged : 0) |
-                        stepCode << 5 | (narrow ? 0 : kRawHeader));
-    if (!narrow) {
+    if (!headerSame) {
+        *p++ = narrow ? std::uint8_t(r.kind | r.decision << 2 | r.reason << 4 | (sameOrigin ? kSameOrigin : 0)) : 0;
+        *p++ = std::uint8_t((narrow ? r.flags : 0) | (noT ? kNoT : 0) | (r.region != b.region ? kRegionChanged : 0) |
+                            stepCode << 5 | (narrow ? 0 : kRawHeader));
+    }
+    if (!headerSame && !narrow) {
         for (std::uint8_t v : {r.kind, r.decision, r.reason, r.flags}) *p++ = v;
         *p++ = sameOrigin ? 1 : 0;
     }
+    // A number against the one before, left out when the same (`bit`) or, with `nextBit`, one more
+    const auto put = [&](std::int64_t delta, std::uint8_t bit, std::uint8_t nextBit = 0) {
+        if (delta == 0) same |= bit;
+        else if (delta == 1 && nextBit) same |= nextBit;
+        else putSigned(p, delta);
+    };
     if (stepCode == kStepCoded) putSigned(p, step);
-    putSigned(p, std::int64_t(r.pixel) - b.pixel);
-    putSigned(p, std::int64_t(r.node) - b.node);
+    put(std::int64_t(r.pixel) - b.pixel, kPixelSame);
+    put(std::int64_t(r.node) - b.node, kNodeSame);
     // Neighbouring rays mostly hit and leave the same objects: both against the one before
-    putSigned(p, std::int64_t(r.hit) - b.hit);
-    putSigned(p, std::int64_t(r.origin) - b.origin);
-    putSigned(p, r.tests);
+    put(std::int64_t(r.hit) - b.hit, kHitSame);
+    put(std::int64_t(r.origin) - b.origin, kOriginSame);
+    put(r.tests, kNoTests, kOneTest);
     if (r.region != b.region) putSigned(p, std::int64_t(r.region) - b.region);
     // The pixel's previous event, as how far back it is (0 none, 1 coded as it is), against
     // the same of the event before: a fill's neighbouring rays look about as far back
     const std::int64_t back = backOf(r.previous, index);
-    putSigned(p, back - (first ? 0 : backOf(b.previous, index - 1)));
+    put(back - (first ? 0 : backOf(b.previous, index - 1)), kBackSame);
     if (back == 1) putSigned(p, r.previous);
     if (!sameOrigin) putRaw(p, r.o);
     if (!dropRays_) putRaw(p, r.d);
@@ -123,30 +146,46 @@ void EventLog::push_back(const EventRecord& given) {
 std::uint64_t EventLog::decode(std::uint64_t pos, std::size_t index, const EventRecord& b, EventRecord& r) const {
     const std::uint8_t* const start = chunks_[pos / kChunk].get() + pos % kChunk;
     const std::uint8_t* p = start;
-    const std::uint8_t h0 = *p++, h1 = *p++;
-    bool sameOrigin = h0 & kSameOrigin;
-    if (h1 & kRawHeader) {
+    const std::uint8_t same = *p++;
+    // The header the event before would have had, one step on
+    std::uint8_t h0 = kSameOrigin, h1 = std::uint8_t(kStepNext << 5);
+    if (std::memcmp(&b.t, &kNone, sizeof b.t) == 0) h1 |= kNoT;
+    bool sameOrigin = true;
+    if (same & kHeaderSame) {
+        r.kind = b.kind;
+        r.decision = b.decision;
+        r.reason = b.reason;
+        r.flags = b.flags;
+    } else {
+        h0 = *p++;
+        h1 = *p++;
+        sameOrigin = h0 & kSameOrigin;
+    }
+    if (!(same & kHeaderSame) && (h1 & kRawHeader)) {
         r.kind = *p++;
         r.decision = *p++;
         r.reason = *p++;
         r.flags = *p++;
         sameOrigin = *p++ != 0;
-    } else {
+    } else if (!(same & kHeaderSame)) {
         r.kind = h0 & 3;
         r.decision = (h0 >> 2) & 3;
         r.reason = (h0 >> 4) & 7;
         r.flags = h1 & 7;
     }
+    const auto get = [&](std::uint8_t bit, std::uint8_t nextBit = 0) -> std::int64_t {
+        return same & bit ? 0 : same & nextBit ? 1 : getSigned(p);
+    };
     const std::uint8_t stepCode = (h1 >> 5) & 3;
     r.step = std::int32_t(b.step + (stepCode == kStepSame ? 0 : stepCode == kStepNext ? 1 : getSigned(p)));
-    r.pixel = std::int32_t(b.pixel + getSigned(p));
-    r.node = std::int32_t(b.node + getSigned(p));
-    r.hit = std::int32_t(b.hit + getSigned(p));
-    r.origin = std::int32_t(b.origin + getSigned(p));
-    r.tests = std::int32_t(getSigned(p));
+    r.pixel = std::int32_t(b.pixel + get(kPixelSame));
+    r.node = std::int32_t(b.node + get(kNodeSame));
+    r.hit = std::int32_t(b.hit + get(kHitSame));
+    r.origin = std::int32_t(b.origin + get(kOriginSame));
+    r.tests = std::int32_t(get(kNoTests, kOneTest));
     r.region = h1 & kRegionChanged ? std::int32_t(b.region + getSigned(p)) : b.region;
     const bool first = index % kGroup == 0;
-    const std::int64_t back = (first ? 0 : backOf(b.previous, std::int64_t(index) - 1)) + getSigned(p);
+    const std::int64_t back = (first ? 0 : backOf(b.previous, std::int64_t(index) - 1)) + get(kBackSame);
     r.previous = back == 0 ? -1 : back == 1 ? std::int32_t(getSigned(p)) : std::int32_t(std::int64_t(index) - back + 1);
     if (sameOrigin) std::memcpy(r.o, b.o, sizeof r.o);
     else getRaw(p, r.o);

@@ -23,10 +23,10 @@ namespace rc {
 class EventLog {
 public:
     /// Events a group holds: what a random read decodes at most.
-    static constexpr std::size_t kGroup = 16;
+    static constexpr std::size_t kGroup = 64;
 
-    /// Keep no ray from now on: each event reads back with o and d zero, and t -1 but a
-    /// shadow ray's; its ray is traced again when asked (rc::impliedRay,
+    /// Keep no ray from now on: each event reads back with o and d zero, and t -1; its ray
+    /// and its hit distance are traced again when asked (rc::impliedRay,
     /// SessionState::event). Set while empty (a log keeps its rays or not from the start).
     void dropRays();
     /// Are the rays left out (dropRays())?
@@ -77,8 +77,9 @@ public:
     }
 
 private:
-    /// Bytes a chunk holds: an event is never split between two.
-    static constexpr std::size_t kChunk = std::size_t(1) << 20;
+    /// Bytes a chunk holds: an event is never split between two. Small enough that the
+    /// last chunk's unused end is nothing beside a render's log (about 5 bytes an event).
+    static constexpr std::size_t kChunk = std::size_t(1) << 16;
     /// The most bytes one event takes.
     static constexpr std::size_t kMaxEvent = 96;
 

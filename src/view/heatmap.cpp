@@ -15,7 +15,7 @@ double testsTop(const TraceRecorder& rec) {
 }
 
 std::optional<double> testsHeat(const TraceRecorder& rec, int px, double top) {
-    if (rec.firstVisit(px) < 0) return std::nullopt;
+    if (!rec.visited(px)) return std::nullopt;
     // [tests heat]
     // Logarithmic: a pixel's tests span 1 to thousands
     return std::min(1.0, std::log1p(double(rec.testsAt(px))) / std::log1p(std::max(1.0, top)));

@@ -25,6 +25,7 @@ SessionState::SessionState(SessionConfig config)
       recorder_(session_->width(), session_->height(), &session_->order()),
       checkpoints_(config_.checkpointEvery) {
     if (!config_.keepRays && raysImplied(*session_)) recorder_.dropRays();
+    if (!config_.keepTallies) recorder_.dropTallies();
     session_->addSink(&recorder_);
     sample();
     checkpoint();
@@ -43,10 +44,13 @@ EventRecord SessionState::event(std::size_t i) const {
     EventRecord r = recorder_.events()[i];
     if (recorder_.events().raysDropped())
         if (const auto ray = impliedRay(*session_, r.pixel, r.node)) {
-            r.setRay(ray->task.query.ray);
-            // The log keeps a shadow ray's hit distance only: a cache may answer one with
-            // any object in the way; every other ray's answer is its nearest hit
+            const rc::Query& q = ray->task.query;
+            r.setRay(q.ray);
+            // Every ray's answer is its nearest hit but a shadow ray's: a cache may answer
+            // one with any object in the way, the object the event keeps, at its distance
+            // along the ray
             if (r.rayKind() != rc::RayKind::Shadow) r.setDistance(!r.deferred(), ray->nearest);
+            else if (r.hit >= 0) r.setDistance(true, {r.hit, scene().intersect(q.ray, r.hit, q.origin)});
         }
     return r;
 }

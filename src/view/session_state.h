@@ -24,6 +24,10 @@ struct SessionConfig {
     /// none when they can be traced again exactly (rc::raysImplied), and event() traces
     /// an event's ray again when asked.
     bool keepRays = false;
+    /// Keep every per-pixel tally (hits, misses, first visits, miss reasons: the Qt GUI's
+    /// heatmaps and tooltips) and the index of misses (its event log panel). Otherwise only
+    /// tests and whether a pixel was visited, as the page reads (TraceRecorder::dropTallies).
+    bool keepTallies = true;
 };
 
 /// How far a multi-step run goes.

@@ -16,6 +16,16 @@ TraceRecorder::TraceRecorder(int width, int height, const rc::RayOrder* order)
     missReason_.assign(n, 0);
 }
 
+void TraceRecorder::dropTallies() {
+    if (!events_.empty()) throw std::logic_error("TraceRecorder::dropTallies: events were recorded");
+    const std::size_t n = std::size_t(width_) * height_;
+    for (auto* v : {&hits_, &missCount_}) std::vector<std::uint32_t>().swap(*v);
+    std::vector<std::int32_t>().swap(firstVisit_);
+    std::vector<std::uint8_t>().swap(missReason_);
+    visited_.assign(n, false);
+    talliesDropped_ = true;
+}
+
 void TraceRecorder::onEvent(const rc::TraceEvent& e) {
     const int p = e.task.pixel;
     const int region = order_ ? int(order_->regions()) : 0;
@@ -24,6 +34,13 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
     lastOfPixel_[p] = index;
     tests_[p] += e.tests;
     last_ = e;
+    if (talliesDropped_) {
+        if (!e.deferred) {
+            lastCommitted_ = e;
+            visited_[std::size_t(p)] = true;
+        }
+        return;
+    }
     if (e.deferred) {
         misses_.push_back(index);
         return;
@@ -41,7 +58,7 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
 std::size_t TraceRecorder::pixelBytes() const {
     const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(lastOfPixel_) + bytes(tests_) + bytes(hits_) + bytes(missCount_) + bytes(firstVisit_) +
-           bytes(missReason_);
+           bytes(missReason_) + (visited_.capacity() + 7) / 8;
 }
 
 std::vector<int> TraceRecorder::eventsOf(int pixel) const {
@@ -80,12 +97,18 @@ void TraceRecorder::rollback(const Mark& m) {
     if (m.events > events_.size() || m.misses > misses_.size())
         throw std::invalid_argument("TraceRecorder::rollback: a mark of another recorder");
     // Take each event back, newest first: what onEvent() added, it subtracts
+    std::vector<int> unvisited;  // with the tallies dropped: pixels that lost a committed event
     events_.findBackward(events_.size(), [&](std::size_t i, const EventRecord& r) {
         if (i < m.events) return true;
         const int p = r.pixel;
         lastOfPixel_[p] = r.previous;
         tests_[p] -= r.tests;
         if (r.deferred()) return false;
+        if (talliesDropped_) {
+            if (visited_[std::size_t(p)]) unvisited.push_back(p);
+            visited_[std::size_t(p)] = false;
+            return false;
+        }
         if (firstVisit_[p] == r.step) firstVisit_[p] = -1;
         if (r.rayDecision() == rc::Decision::Hit) --hits_[p];
         // The first miss goes last: with it goes the pixel's miss reason
@@ -94,6 +117,13 @@ void TraceRecorder::rollback(const Mark& m) {
     });
     events_.truncate(m.events);
     misses_.truncate(m.misses);
+    // A pixel is still visited when a committed event of it is left
+    for (const int p : unvisited)
+        for (int i = lastOfPixel_[p]; i >= 0 && !visited_[std::size_t(p)];) {
+            const EventRecord r = events_[std::size_t(i)];
+            visited_[std::size_t(p)] = !r.deferred();
+            i = r.previous;
+        }
     last_ = m.last;
     lastCommitted_ = m.lastCommitted;
     samples_ = m.samples;

@@ -3,6 +3,7 @@
 /// \brief A trace sink that keeps every event and per-pixel tallies for the GUI.
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "view/block_vector.h"
@@ -32,8 +33,15 @@ public:
     const EventLog& events() const { return events_; }
     /// Keep no event's ray (EventLog::dropRays); before the first event.
     void dropRays() { events_.dropRays(); }
+    /// Keep only the tallies the page reads (tests and whether a pixel was visited), not
+    /// hits, misses, first visits and miss reasons (4 bytes a pixel and a bit, not 17), nor
+    /// the index of misses (the Qt GUI's event log panel reads it). Before the first event;
+    /// misses(), hitsAt(), missesAt(), firstVisit() and missReasonAt() then throw.
+    void dropTallies();
+    /// Are they left out (dropTallies())?
+    bool talliesDropped() const { return talliesDropped_; }
     /// Indices into events() of committed misses and of deferrals, in order.
-    const BlockVector<std::int32_t>& misses() const { return misses_; }
+    const BlockVector<std::int32_t>& misses() const { return kept(misses_); }
     /// Bytes the per-event record takes (events and the miss index), to weigh against
     /// events().size(). The per-pixel tallies come on top: pixelBytes().
     std::size_t eventBytes() const { return events_.bytes() + misses_.bytes(); }
@@ -53,12 +61,17 @@ public:
     std::int32_t testsAt(int pixel) const { return tests_[pixel]; }
     /// Committed cache hits and misses of every ray of the pixel (all samples): a pixel of
     /// 256 samples with 64 shadow rays each makes more lookups than 16 bits hold.
-    std::uint32_t hitsAt(int pixel) const { return hits_[pixel]; }
-    std::uint32_t missesAt(int pixel) const { return missCount_[pixel]; }
-    /// Step at which the pixel's first ray was traced, -1 if none.
-    std::int32_t firstVisit(int pixel) const { return firstVisit_[pixel]; }
+    std::uint32_t hitsAt(int pixel) const { return kept(hits_)[std::size_t(pixel)]; }
+    std::uint32_t missesAt(int pixel) const { return kept(missCount_)[std::size_t(pixel)]; }
+    /// Step at which the pixel's first committed ray was traced, -1 if none.
+    std::int32_t firstVisit(int pixel) const { return kept(firstVisit_)[std::size_t(pixel)]; }
+    /// Has a committed ray of the pixel been traced? (firstVisit() >= 0; kept when the
+    /// tallies are dropped too.)
+    bool visited(int pixel) const {
+        return talliesDropped_ ? visited_[std::size_t(pixel)] : firstVisit_[std::size_t(pixel)] >= 0;
+    }
     /// Reason of the pixel's first committed miss (rc::MissReason::None if none).
-    rc::MissReason missReasonAt(int pixel) const { return rc::MissReason(missReason_[pixel]); }
+    rc::MissReason missReasonAt(int pixel) const { return rc::MissReason(kept(missReason_)[std::size_t(pixel)]); }
 
     /// Adds a chart sample; keeps at most about 2000 by thinning old ones.
     void sample(const StatSample& s);
@@ -79,6 +92,13 @@ public:
     void rollback(const Mark& m);
 
 private:
+    /// A tally dropTallies() may have left out: throws when it was.
+    template <class V>
+    const V& kept(const V& tally) const {
+        if (talliesDropped_) throw std::logic_error("TraceRecorder: this tally is not kept (dropTallies)");
+        return tally;
+    }
+
     int width_, height_;
     const rc::RayOrder* order_;
     EventLog events_;
@@ -90,6 +110,9 @@ private:
     /// events, and the log numbers its events in 32 bits (EventRecord::step, lastOfPixel_).
     std::vector<std::int32_t> firstVisit_;
     std::vector<std::uint8_t> missReason_;
+    /// With the tallies dropped, whether a pixel was visited (in place of firstVisit_)
+    std::vector<bool> visited_;
+    bool talliesDropped_ = false;
     std::optional<rc::TraceEvent> last_, lastCommitted_;
     std::vector<StatSample> samples_;
     std::int64_t sampleEvery_ = 1;
