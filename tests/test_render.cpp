@@ -13,7 +13,6 @@
 #include "search/answer_table.h"
 #include "scene/builtin_scenes.h"
 #include "scene/nff_reader.h"
-#include "whitted_reference.h"
 
 using namespace rc;
 
@@ -122,20 +121,6 @@ TEST_CASE("step() traces exactly one ray", "[session]") {
         REQUIRE(s.counters().totalRays() == before + 1);
         REQUIRE(s.steps() == i + 1);
         before = s.counters().totalRays();
-    }
-}
-
-TEST_CASE("cube:3 and cube:4 are the image a plain recursive Whitted tracer makes", "[golden]") {
-    // The oracle is a second implementation (tests/whitted_reference.h): recursion, every
-    // ray against every sphere, the shading written out again from the model
-    for (const char* name : {"cube:3", "cube:4"}) {
-        const auto scene = shared(makeBuiltin(name));
-        RenderSession s(scene, sized(48, 40));
-        s.run();
-        const ImageAccumulator expected = testing::WhittedReference(*scene).render(48, 40);
-        INFO(name);
-        REQUIRE(s.image().rgb8() == expected.rgb8());
-        for (int p = 0; p < 48 * 40; ++p) REQUIRE(s.image().value(p) == expected.value(p));
     }
 }
 
