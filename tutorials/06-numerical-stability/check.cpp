@@ -153,13 +153,13 @@ TEST_CASE("far.nff drawn with your roots matches the oracle's", "[tutorial06]") 
     const int w = 64, h = 64;
     const rc::RayGenerator camera(s.camera, w, h);
     auto firstHit = [&](const rc::Ray& ray, auto roots) {
-        rc::Answer best;
+        // The least (distance, sphere) pair: ties go to the lower index, as in the renderer
+        std::pair<double, int> least{rc::kNoHit, -1};
         for (int j = 0; j < int(s.spheres.size()); ++j) {
             const auto r = roots(ray, s.spheres[j]);
-            const double t = !r.hit ? rc::kNoHit : r.t0 > 0.0 ? r.t0 : r.t1 > 0.0 ? r.t1 : rc::kNoHit;
-            if (t < rc::kNoHit && rc::nearer(t, j, best)) best = {j, t};
+            least = std::min(least, {!r.hit ? rc::kNoHit : r.t0 > 0.0 ? r.t0 : r.t1 > 0.0 ? r.t1 : rc::kNoHit, j});
         }
-        return best;
+        return least.first < rc::kNoHit ? rc::Answer{least.second, least.first} : rc::Answer{};
     };
     tutorial::Picture pic(w, h);
     int wrong = 0;
