@@ -29,6 +29,16 @@ int main(int argc, char* argv[]) {
         std::printf("\nNOT YET: tutorial %02d's function is still the stub as shipped.\n", nn);
         failed = std::max(failed, 1);
     }
+    // A check that runs the renderer runs the earlier tutorials' holes too: when one of them
+    // is still its stub, a correct answer here can fail for that alone, so the verdict names
+    // the tutorial to do first (one sentence, the renderer's own for tutorial 01)
+    std::string first;
+    for (int k = 1; k <= 7 && first.empty(); ++k)
+        if (k != nn && rc::stubRan(k))
+            first = k == 1 ? rc::cannotDrawYet()
+                           : "This check ran tutorial " + std::string(k < 10 ? "0" : "") + std::to_string(k) +
+                                 "'s stub as shipped, so do tutorial " + std::string(k < 10 ? "0" : "") +
+                                 std::to_string(k) + " first.";
     if (failed == 0) {
         std::printf("\nSOLVED: every check passes.\n");
     } else {
@@ -38,6 +48,7 @@ int main(int argc, char* argv[]) {
             "expected value and yours. The tutorial's page has hints, from a nudge to a\n"
             "near-solution.\n",
             failed);
+        if (!first.empty()) std::printf("%s\n", first.c_str());
     }
     return failed;
 }
