@@ -1,4 +1,6 @@
-// Tutorial 03, an alternative answer the check must accept: a capsule of the larger radius around the two centres: a larger hull, a few extra blockers
+// Tutorial 03, a wrong answer: a capsule of the larger radius around the two centres. It holds
+// the hull, so its lists hold every blocker, but it is not the hull: outside it the distance is
+// less than the exact one, and cube:4's lists are longer than the oracle's
 // BEGIN ANSWER
     nested_ = false;  // the hull keeps its two spheres; distance() needs nothing else
 // END ANSWER

@@ -1,6 +1,6 @@
-// Tutorial 03, an alternative answer the check must accept, and count: the cone without its two
-// spherical caps. It holds the hull, so its lists hold every blocker, plus extras (cube:4: 6860
-// extra on top of the library's 16260, within the 1.5x the check allows).
+// Tutorial 03, a wrong answer: the cone without its two spherical caps. It holds the hull, so
+// its lists hold every blocker, but it is not the hull: beyond the spheres the distance is less
+// than the exact one, and cube:4's lists are longer than the oracle's.
 // BEGIN PREAMBLE
 
 // The hull of spheres a and b, the distance to it; Hull::distance() calls it
