@@ -69,12 +69,31 @@ public:
     // the centre (that ray misses the sphere unless the eye is inside it)
     Disc disc(const rc::Vec3& axis, int j) const override {
         const rc::Sphere& s = sphere(j);
-        const rc::Vec3 toCentre = glm::normalize(s.c - eye_);
+        const rc::Vec3 v = s.c - eye_;
+        const rc::Vec3 toCentre = glm::normalize(v);
         const rc::Vec3 square =
             glm::normalize(glm::cross(toCentre, std::abs(toCentre.x) < 0.9 ? rc::Vec3{1, 0, 0} : rc::Vec3{0, 1, 0}));
-        const double centre = tutorial::emptyConeAngle(eye_, axis, {rc::Sphere{s.c, 0.0}});
-        const double beside = tutorial::emptyConeAngle(eye_, square, {s});
+        const double centre = emptyConeElsewhere(axis, v, 0.0);
+        const double beside = emptyConeElsewhere(square, v, s.r);
         return {std::max(0.0, centre), beside >= 0.0 ? M_PI_2 - beside : M_PI};
+    }
+    // Your emptyConeAngle() asked about the sphere of radius r at v from the eye, in a frame
+    // of its own, new at each call: the eye at a random point, the scene turned by a random
+    // rotation and scaled by a random factor. The angles are the same, to rounding (a few
+    // ulps, far below any margin an exact cache needs), but nothing it is shown says where the
+    // eye or the sphere is: a cache cannot keep the spheres its emptyConeAngle() sees
+    double emptyConeElsewhere(const rc::Vec3& axis, const rc::Vec3& v, double r) const {
+        const rc::Vec3 x = frames_.direction();
+        rc::Vec3 y;
+        do y = glm::cross(x, frames_.direction());
+        while (glm::length(y) < 0.1);
+        y = glm::normalize(y);
+        const rc::Vec3 z = glm::cross(x, y);
+        auto turn = [&](const rc::Vec3& w) { return w.x * x + w.y * y + w.z * z; };
+        const double scale = frames_.logUniform(-2.0, 2.0);
+        // Within the scaled distance of the origin, so the translation rounds no worse than the scaling
+        const rc::Vec3 apex = frames_.inBox(scale * glm::length(v));
+        return tutorial::emptyConeAngle(apex, turn(axis), {rc::Sphere{apex + scale * turn(v), scale * r}});
     }
     const rc::Sphere& sphere(int j) const {
         if (j < 0 || j >= size()) throw std::out_of_range("sphere " + std::to_string(j) + " of " + std::to_string(size()));
@@ -87,6 +106,7 @@ private:
     const std::vector<rc::Sphere>& spheres_;
     rc::Vec3 eye_;
     mutable long tests_ = 0;
+    mutable tutorial::Random frames_{2026};  ///< the frames disc() asks emptyConeAngle() in
 };
 
 // ---- Driving a cache over a scene's eye rays in scanline order ------------------------
