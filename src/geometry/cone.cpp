@@ -17,9 +17,9 @@ bool meetsHull(const Sphere& s, const Sphere& a, const Sphere& b, double slack) 
 }
 
 double hullHalfAngle(const Sphere& a, const Sphere& b) {
-    const double D = glm::length(b.c - a.c);
-    if (D <= std::abs(a.r - b.r)) return 0.0;
-    return pm::asin((a.r - b.r) / D);
+    // The hull works out the cone once (its constructor is tutorial 03's hole)
+    const Hull hull(a, b);
+    return hull.nested() ? 0.0 : pm::asin(hull.sinHalfAngle());
 }
 
 }  // namespace rc

@@ -17,6 +17,10 @@ public:
     Hull(const Sphere& a, const Sphere& b);
     /// Signed distance from `p`: exact outside the hull, negative inside it.
     double distance(const Vec3& p) const;
+    /// One sphere inside the other: the hull is the larger sphere.
+    bool nested() const { return nested_; }
+    /// The sine of the tangent cone's half-angle, as the constructor works it out.
+    double sinHalfAngle() const { return s_; }
 
 private:
     Sphere a_, b_;
@@ -33,8 +37,9 @@ double hullDistance(const Vec3& p, const Sphere& a, const Sphere& b);
 /// hold extra spheres, never miss one).
 bool meetsHull(const Sphere& s, const Sphere& a, const Sphere& b, double slack);
 
-/// Half-angle (radians) of the tangent cone of two spheres: asin((ra - rb) / D).
-/// Negative when `b` is the larger one; 0 for equal radii (a cylinder).
+/// Half-angle (radians) of the tangent cone of two spheres, from their Hull (tutorial 03's
+/// hole). Negative when `b` is the larger one; 0 for equal radii (a cylinder) and for nested
+/// spheres.
 double hullHalfAngle(const Sphere& a, const Sphere& b);
 
 }  // namespace rc

@@ -23,7 +23,13 @@ BlockerCache::BlockerCache(const Scene& scene, const CompleteSearch& search, Var
     // [direction-lists-where]
     // Only in front of the linear scan: a grid or a hierarchy answers a miss with a few
     // tests, fewer than a cell's list holds (`raycache bench --accel bvh` compares the two)
+    // BEGIN SOLUTION 07
     if (directed_ && !search.cheap()) directions_ = std::make_unique<DirectionLists>(scene, search, lists_);
+    // END SOLUTION
+    // BEGIN STUB
+    // // The cells of directions (search/direction_lists.cpp) are tutorial 07's challenge: this
+    // // edition has no direction lists, and blocker+dir answers as blocker+ does (exactly)
+    // END STUB
     // [direction-lists-where]
 }
 

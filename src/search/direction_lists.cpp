@@ -17,19 +17,26 @@ namespace rc {
 namespace {
 /// The direction of point (x, y) of face `face` of the cube [-1, 1]^3: axis face / 2,
 /// negative for odd faces, x and y along the next two axes.
-Vec3 faceDirection(int face, double x, double y) {
+[[maybe_unused]] Vec3 faceDirection(int face, double x, double y) {
+    // BEGIN SOLUTION 07
     const int axis = face / 2;
     Vec3 d{0.0};
     d[axis] = face % 2 ? -1.0 : 1.0;
     d[(axis + 1) % 3] = x;
     d[(axis + 2) % 3] = y;
     return glm::normalize(d);
+    // END SOLUTION
+    // BEGIN STUB
+    // (void)face, (void)x, (void)y;
+    // throw std::logic_error("faceDirection: the cells of directions are tutorial 07's challenge: this edition has none (blocker+dir is blocker+)");
+    // END STUB
 }
 
 /// How far sphere s lies from the cone of rays from `apex` around `axis` (half-angle whose
 /// cosine and sine are cosA and sinA), less `reach` (negative: they meet).
 inline double coneDistance(const Vec3& apex, double reach, const Vec3& axis, double cosA, double sinA,
                            const Sphere& s) {
+    // BEGIN SOLUTION 07
     // [cone-distance]
     // The distance from the sphere to the cone (negative inside), measured in the half-plane
     // through the axis: x along it, y away from it. Beside the cone's side it is the
@@ -40,6 +47,11 @@ inline double coneDistance(const Vec3& apex, double reach, const Vec3& axis, dou
     const double side = x * cosA + y * sinA < 0.0 ? glm::length(v) : y * cosA - x * sinA;
     return side - s.r - reach;
     // [cone-distance]
+    // END SOLUTION
+    // BEGIN STUB
+    // (void)apex, (void)reach, (void)axis, (void)cosA, (void)sinA, (void)s;
+    // throw std::logic_error("coneDistance: the cells of directions are tutorial 07's challenge: this edition has none (blocker+dir is blocker+)");
+    // END STUB
 }
 
 /// The objects whose bounding spheres rays leaving a ball in a cone of directions can meet:
@@ -176,6 +188,7 @@ std::size_t DirectionLists::nearestFirst(int site) {
 }
 
 DirectionLists::CellCone DirectionLists::cellCone(int cell, int side) {
+    // BEGIN SOLUTION 07
     // Around the direction of the square's centre, out to its farthest corner (a cap holds
     // a convex spherical square when it holds its corners)
     const int face = cell / (side * side), i = cell / side % side, j = cell % side;
@@ -186,6 +199,11 @@ DirectionLists::CellCone DirectionLists::cellCone(int cell, int side) {
         c.cosHalf = std::min(c.cosHalf, glm::dot(c.axis, at(i + corner % 2, j + corner / 2)));
     c.cosHalf -= 1e-9;  // rounding only ever widens a cone
     return c;
+    // END SOLUTION
+    // BEGIN STUB
+    // (void)cell, (void)side;
+    // throw std::logic_error("DirectionLists::cellCone: the cells of directions are tutorial 07's challenge: this edition has none (blocker+dir is blocker+)");
+    // END STUB
 }
 
 int DirectionLists::side(int site) const {
@@ -198,6 +216,7 @@ int DirectionLists::side(int site) const {
 }
 
 int DirectionLists::cell(const Vec3& d, int side) {
+    // BEGIN SOLUTION 07
     // [direction-cell]
     // The cube face the direction leaves through, and the square of that face
     const Vec3 a = glm::abs(d);
@@ -206,6 +225,11 @@ int DirectionLists::cell(const Vec3& d, int side) {
     auto square = [&](double x) { return std::min(int((x / a[axis] + 1.0) * 0.5 * side), side - 1); };
     return (face * side + square(d[(axis + 1) % 3])) * side + square(d[(axis + 2) % 3]);
     // [direction-cell]
+    // END SOLUTION
+    // BEGIN STUB
+    // (void)d, (void)side;
+    // throw std::logic_error("DirectionLists::cell: the cells of directions are tutorial 07's challenge: this edition has none (blocker+dir is blocker+)");
+    // END STUB
 }
 
 const DirectionList& DirectionLists::get(int site, const Vec3& d, std::uint32_t& memo, Counters& n) {
