@@ -3,6 +3,7 @@
 // log would have kept it.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -106,11 +107,20 @@ TEST_CASE("The page's records of a render take at most kRecordBytes a pixel", "[
     o.width = o.height = 384;
     o.cache = rc::CacheKind::BlockerPlus;
     o.order = rc::OrderKind::BreadthFirst;
+    // and its order's paths take room as they fill (RenderOptions::reserveRays)
+    o.reserveRays = false;
     rc::SessionConfig c{std::make_shared<const rc::Scene>(rc::makeBuiltin("cube:4")), o};
     c.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
     c.keepTallies = false;
     rc::SessionState s(std::move(c));
     REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));
+    // The same image, sum for sum, as the render that makes room for a band up front
+    o.reserveRays = true;
+    rc::RenderSession native(std::make_shared<const rc::Scene>(rc::makeBuiltin("cube:4")), o);
+    while (native.step()) {}
+    const auto a = s.session().image().sums(), b = native.image().sums();
+    REQUIRE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+    REQUIRE(s.session().steps() == native.steps());
     const rc::TraceRecorder& rec = s.recorder();
     const double pixels = double(s.width()) * s.height();
     const double events = double(rec.events().size()), bytes = double(rec.eventBytes() + rec.pixelBytes() + s.checkpoints().bytes());

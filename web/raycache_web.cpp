@@ -185,6 +185,8 @@ private:
         o.accel = named(parseAccelKind(accel), "search", accel, registryListing("searches"));
         if (band > NffLimits::maxResolution) throw std::invalid_argument("band " + std::to_string(band) + " is too large");
         o.band = band < 0 ? kAutoBand : band;
+        // Its memory keeps all it is given: the order's paths take room as they fill
+        o.reserveRays = false;
         // The page has no Step back: one checkpoint, at step 0
         config.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
         // and shows of the per-pixel tallies only the tests heatmap and which pixels were traced

@@ -4,7 +4,9 @@
 // frontier, caption). The page starts it from a Blob (a page opened from file:// may not
 // start a worker from a file): the sources of renderWorkerParts, after raycache.js's, then a
 // call of renderWorkerMain. Its state is one object, `w`, handed to each part.
-function renderWorkerMain(self, RayCache) {
+// `wasmApart`: the source has no WebAssembly (the page took raycache.js's base64 copy out
+// of it), whose bytes come in the first message.
+function renderWorkerMain(self, RayCache, wasmApart) {
   const w = {
     self, module: null, render: null,
     compare: null,   // a second render beside the first (another cache and order), in lockstep
@@ -16,7 +18,22 @@ function renderWorkerMain(self, RayCache) {
     view: { cylinder: false, hull: false, frontier: false, misses: false, heatmap: false, clip: null },
   };
   self.onmessage = (event) => workerMessage(w, event.data);
-  RayCache().then((m) => workerLoaded(w, m));
+  if (!wasmApart) workerStart(w, null);
+}
+
+// Loads the core: from the bytes the page sent (compiled here, then let go: the worker
+// keeps no copy of them, as text or bytes), else from the data URI in raycache.js's source
+function workerStart(w, bytes) {
+  const options = {};
+  if (bytes) {
+    options.instantiateWasm = (imports, done) => {
+      const wasm = bytes;
+      bytes = null;
+      WebAssembly.instantiate(wasm, imports).then((r) => done(r.instance, r.module));
+      return {};
+    };
+  }
+  RayCache(options).then((m) => workerLoaded(w, m));
 }
 
 // What the page draws of one render: its picture at image size, made by the core (the
@@ -249,7 +266,9 @@ function workerStep(w, m) {
 }
 
 function workerMessage(w, m) {
-  if (m.type === 'view') {
+  if (m.type === 'wasm') {
+    workerStart(w, m.bytes);
+  } else if (m.type === 'view') {
     w.view = m.view;
     if (w.render) workerFrame(w);
   } else if (m.type === 'claims') {
@@ -278,5 +297,5 @@ function workerLoaded(w, module) {
 }
 
 // What the page puts in the worker's source, besides raycache.js's factory
-const renderWorkerParts = [renderWorkerMain, workerPicture, workerBandRows, workerBitmap, workerImageHash, workerSha256, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
+const renderWorkerParts = [renderWorkerMain, workerStart, workerPicture, workerBandRows, workerBitmap, workerImageHash, workerSha256, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
                            workerClaims, workerOpen, workerStep, workerMessage, workerLoaded];

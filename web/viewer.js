@@ -37,14 +37,26 @@ function usePalette(p) {
 const rgba = (c, a) => 'rgba(' + c[0] + ',' + c[1] + ',' + c[2] + ',' + (a === undefined ? 1 : a / 255) + ')';
 
 // The worker, from a Blob: raycache.js's factory and the worker's parts (render_worker.js),
-// as source text, then a call of renderWorkerMain
+// as source text, then a call of renderWorkerMain. The factory carries the WebAssembly as a
+// base64 data URI (-sSINGLE_FILE): the worker gets its bytes in a message instead, so that
+// it holds no text copy of them (its source, and the string the factory would make of it)
 function startWorker() {
-  const source = 'var _scriptDir = undefined;\nvar RayCache = ' + RayCache.toString() + ';\n' +
-    renderWorkerParts.map(String).join('\n') + '\nrenderWorkerMain(self, RayCache);\n';
+  let factory = RayCache.toString(), wasm = null;
+  const prefix = 'wasmBinaryFile="data:application/octet-stream;base64,';
+  const begin = factory.indexOf(prefix) + prefix.length, end = factory.indexOf('"', begin);
+  if (begin >= prefix.length && end > begin) {
+    const text = atob(factory.slice(begin, end));
+    wasm = new Uint8Array(text.length);
+    for (let i = 0; i < text.length; ++i) wasm[i] = text.charCodeAt(i);
+    factory = factory.slice(0, begin) + factory.slice(end);
+  }
+  const source = 'var _scriptDir = undefined;\nvar RayCache = ' + factory + ';\n' +
+    renderWorkerParts.map(String).join('\n') + '\nrenderWorkerMain(self, RayCache, ' + !!wasm + ');\n';
   const url = URL.createObjectURL(new Blob([source], { type: 'text/javascript' }));
   worker = new Worker(url);
   worker.onmessage = (e) => onMessage(e.data);
   worker.onerror = (e) => showError('worker: ' + e.message);
+  if (wasm) worker.postMessage({ type: 'wasm', bytes: wasm.buffer }, [wasm.buffer]);
 }
 
 // An error is a sentence in the caption; the picture, key and statistics of what was open
