@@ -3,6 +3,7 @@
 // stepped ray by ray, as in the Qt GUI, and its overlays are the core's (rc::focusShapes,
 // rc::missLayer, rc::regionLayer, rc::focusCaption): nothing here computes an image, an
 // answer or an overlay's geometry, it only hands them over.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <emscripten/bind.h>
@@ -183,6 +185,8 @@ private:
         o.accel = named(parseAccelKind(accel), "search", accel, registryListing("searches"));
         if (band > NffLimits::maxResolution) throw std::invalid_argument("band " + std::to_string(band) + " is too large");
         o.band = band < 0 ? kAutoBand : band;
+        // Its memory keeps all it is given: the order's paths take room as they fill
+        o.reserveRays = false;
         // The page has no Step back: one checkpoint, at step 0
         config.checkpointEvery = std::numeric_limits<std::int64_t>::max() / 2;
         // and shows of the per-pixel tallies only the tests heatmap and which pixels were traced
@@ -254,52 +258,63 @@ public:
     }
     int selectedPixel() const { return selection_.pixel; }
 
-    /// The 8-bit RGB image, rows top to bottom, for its hash once the render is complete:
-    /// written over the picture's memory (a view into memory the next call overwrites), so
-    /// the page keeps one image-sized buffer between frames, not two.
-    val image() {
-        const std::size_t n = std::size_t(width()) * std::size_t(height());
-        frame_.resize(n * 4);
-        state_->session().image().rgb8Into(frame_.data(), 3);
-        return val(emscripten::typed_memory_view(n * 3, frame_.data()));
+    /// The 8-bit RGB image's rows [row, row + rows), top to bottom, for its hash once the
+    /// render is complete (a view into memory the next call overwrites): the page asks for
+    /// it a band at a time, so neither it nor the WebAssembly memory holds a second
+    /// image-sized buffer beside the render's sums.
+    val imageRows(int row, int rows) {
+        const auto [begin, end] = pixelsOf(row, rows);
+        frame_.resize(std::size_t(end - begin) * 3);
+        state_->session().image().rgb8Into(frame_.data(), 3, begin, end);
+        return val(emscripten::typed_memory_view(frame_.size(), frame_.data()));
     }
     /// The top of this render's tests heatmap (rc::testsTop); two renders side by side
     /// share the larger.
     double heatTop() const { return testsTop(state_->recorder()); }
 
-    /// The picture the page draws at image size, 8-bit RGBA (a view into memory the next
-    /// call overwrites): the image, or the tests heatmap up to `top` (rc::testsHeatmapRgba);
-    /// then the fill's regions (rc::regionLayer: the one being filled tinted, finished ones
-    /// edged) and the misses at the path in focus (rc::missLayer), by reason.
-    val picture(bool heatmap, double top, bool misses, bool regions) {
-        const std::size_t n = std::size_t(width()) * std::size_t(height());
-        if (heatmap) {
-            frame_ = testsHeatmapRgba(state_->recorder(), top);
+    /// Begins the picture the page draws at image size, 8-bit RGBA, which pictureRows()
+    /// gives a band at a time: the image, or the tests heatmap up to `top`
+    /// (rc::testsHeatmapRgbaInto); then the fill's regions (rc::regionLayer: the one being
+    /// filled tinted, finished ones edged) and the misses at the path in focus
+    /// (rc::missLayer), by reason.
+    void beginPicture(bool heatmap, double top, bool misses, bool regions) {
+        picture_ = {heatmap, top, {}, {}};
+        if (regions) picture_.regions = regionLayer(*state_);
+        if (misses) {
+            const auto f = RayFocus::of(*state_, selection_);
+            picture_.misses = missLayer(*state_, f ? f->node : 0);
+        }
+    }
+    /// Rows [row, row + rows) of the picture beginPicture() began (a view into memory the
+    /// next call overwrites).
+    val pictureRows(int row, int rows) {
+        const std::pair<int, int> pixels = pixelsOf(row, rows);
+        const int begin = pixels.first, end = pixels.second;
+        frame_.resize(std::size_t(end - begin) * 4);
+        if (picture_.heatmap) {
+            testsHeatmapRgbaInto(state_->recorder(), picture_.top, frame_.data(), begin, end);
         } else {
             // Straight from the render's sums into the picture, with no RGB copy between
-            frame_.assign(n * 4, 255);
-            state_->session().image().rgb8Into(frame_.data(), 4);
+            std::fill(frame_.begin(), frame_.end(), 255);
+            state_->session().image().rgb8Into(frame_.data(), 4, begin, end);
         }
-        const auto blend = [this](std::size_t i, Rgb c, double a) {
-            std::uint8_t* d = &frame_[i * 4];
+        const auto blend = [this, begin](int px, Rgb c, double a) {
+            std::uint8_t* d = &frame_[std::size_t(px - begin) * 4];
             const std::uint8_t to[3] = {c.r, c.g, c.b};
             for (int k = 0; k < 3; ++k) d[k] = std::uint8_t(std::lround(d[k] + (to[k] - d[k]) * a));
         };
-        if (regions) {
-            const std::vector<std::uint8_t> r = regionLayer(*state_);
-            for (std::size_t i = 0; i < r.size(); ++i) {
-                if (r[i] == 1) blend(i, colours::kRegion, colours::kRegionOpacity / 255.0);
-                else if (r[i] == 2) blend(i, colours::kRegionEdge, colours::kRegionEdgeOpacity / 255.0);
-            }
+        const std::vector<std::uint8_t>& r = picture_.regions;
+        for (int i = begin; i < end && !r.empty(); ++i) {
+            if (r[std::size_t(i)] == 1) blend(i, colours::kRegion, colours::kRegionOpacity / 255.0);
+            else if (r[std::size_t(i)] == 2) blend(i, colours::kRegionEdge, colours::kRegionEdgeOpacity / 255.0);
         }
-        if (misses) {
-            const auto f = RayFocus::of(*state_, selection_);
-            const std::vector<std::uint8_t> m = missLayer(*state_, f ? f->node : 0);
-            for (std::size_t i = 0; i < m.size(); ++i)
-                if (m[i]) blend(i, missReasonColour(MissReason(m[i])), 1.0);
-        }
+        const std::vector<std::uint8_t>& m = picture_.misses;
+        for (int i = begin; i < end && !m.empty(); ++i)
+            if (m[std::size_t(i)]) blend(i, missReasonColour(MissReason(m[std::size_t(i)])), 1.0);
         return val(emscripten::typed_memory_view(frame_.size(), frame_.data()));
     }
+    /// Ends the picture: its layers are let go.
+    void endPicture() { picture_ = {}; }
 
     /// Applies stop `stop` of tour `tour` (under /tours) to this render, freshly opened with
     /// the stop's settings (rc::applyStopRays): its steps, its run to a miss, its selection.
@@ -490,7 +505,21 @@ private:
     std::unique_ptr<SessionState> state_;
     std::unique_ptr<ImageProjector> projector_;
     Selection selection_;
-    std::vector<std::uint8_t> frame_;  ///< picture() and image() write here: one buffer
+    /// The pixels [begin, end) of rows [row, row + rows), clamped to the image.
+    std::pair<int, int> pixelsOf(int row, int rows) const {
+        const int top = std::clamp(row, 0, height()), bottom = std::clamp(row + std::max(rows, 0), top, height());
+        return {top * width(), bottom * width()};
+    }
+
+    /// What beginPicture() was asked for, and its overlays' layers (a byte a pixel, empty
+    /// when not shown)
+    struct Picture {
+        bool heatmap = false;
+        double top = 1;
+        std::vector<std::uint8_t> regions, misses;
+    };
+    Picture picture_;
+    std::vector<std::uint8_t> frame_;  ///< pictureRows() and imageRows() write here: one band
     std::string error_;
     std::vector<OverlayShape> drawn_;  ///< the shapes the last shapes() gave
 };
@@ -532,9 +561,11 @@ EMSCRIPTEN_BINDINGS(raycache) {
         .function("showcase", &WebRender::showcase)
         .function("clearSelection", &WebRender::clearSelection)
         .function("selectedPixel", &WebRender::selectedPixel)
-        .function("image", &WebRender::image)
+        .function("imageRows", &WebRender::imageRows)
         .function("heatTop", &WebRender::heatTop)
-        .function("picture", &WebRender::picture)
+        .function("beginPicture", &WebRender::beginPicture)
+        .function("pictureRows", &WebRender::pictureRows)
+        .function("endPicture", &WebRender::endPicture)
         .function("applyStop", &WebRender::applyStop)
         .function("claims", &WebRender::claims)
         .function("claimsCompared", &WebRender::claimsCompared)

@@ -4,33 +4,47 @@
 // frontier, caption). The page starts it from a Blob (a page opened from file:// may not
 // start a worker from a file): the sources of renderWorkerParts, after raycache.js's, then a
 // call of renderWorkerMain. Its state is one object, `w`, handed to each part.
-function renderWorkerMain(self, RayCache) {
+// `wasmApart`: the source has no WebAssembly (the page took raycache.js's base64 copy out
+// of it), whose bytes come in the first message.
+function renderWorkerMain(self, RayCache, wasmApart) {
   const w = {
     self, module: null, render: null,
     compare: null,   // a second render beside the first (another cache and order), in lockstep
     running: null,   // 'play' or 'end' while a run goes on
     runStart: 0,     // when the run to the end was asked for (performance.now())
     selected: null,  // the pixel (and path) selected in both renders: {x, y, path}
-    spares: [],      // picture buffers the page has drawn and given back, to fill again
+    canvas: null,    // an OffscreenCanvas the pictures are put together in, a band at a time
     // What the page shows: which overlays, the heatmap, and the image rectangle they are clipped to
     view: { cylinder: false, hull: false, frontier: false, misses: false, heatmap: false, clip: null },
   };
   self.onmessage = (event) => workerMessage(w, event.data);
-  RayCache().then((m) => workerLoaded(w, m));
+  if (!wasmApart) workerStart(w, null);
+}
+
+// Loads the core: from the bytes the page sent (compiled here, then let go: the worker
+// keeps no copy of them, as text or bytes), else from the data URI in raycache.js's source
+function workerStart(w, bytes) {
+  const options = {};
+  if (bytes) {
+    options.instantiateWasm = (imports, done) => {
+      const wasm = bytes;
+      bytes = null;
+      WebAssembly.instantiate(wasm, imports).then((r) => done(r.instance, r.module));
+      return {};
+    };
+  }
+  RayCache(options).then((m) => workerLoaded(w, m));
 }
 
 // What the page draws of one render: its picture at image size, made by the core (the
 // image or the heatmap up to `top`, regions, misses), and the shapes and key of the ray
-// in focus. The image's bytes only once it is complete, for its hash (`hashed`: the page
-// hashes the first render's only).
+// in focus. The image's hash once it is complete (`hashed`: the page shows the first
+// render's only).
 function workerPicture(w, r, buffers, top, hashed) {
   const view = w.view;
-  const picture = r.picture(view.heatmap, top, view.misses, view.frontier);
-  const layer = workerSpare(w, picture.length);
-  layer.set(picture);
-  const image = hashed && r.done() ? r.image().slice() : null;
-  buffers.push(layer.buffer);
-  if (image) buffers.push(image.buffer);
+  const layer = workerBitmap(w, r, view.heatmap, top, view.misses, view.frontier);
+  const imageHash = hashed && r.done() ? workerImageHash(r) : null;
+  buffers.push(layer);
   const width = r.width(), height = r.height();
   const c = view.clip || [0, 0, width, height];
   // The margin keeps cut edges off the picture (as the Qt GUI's)
@@ -38,7 +52,7 @@ function workerPicture(w, r, buffers, top, hashed) {
   const shapes = view.cylinder || view.hull
     ? r.shapes(view.cylinder, view.hull, c[0] - mx, c[1] - my, c[2] + mx, c[3] + my) : [];
   return {
-    width, height, layer, image, heatTop: top, shapes,
+    width, height, layer, imageHash, heatTop: top, shapes,
     frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
     keys: JSON.parse(r.keys(view.cylinder, view.hull, view.frontier, view.misses)),
     statistics: JSON.parse(r.statistics()), caption: r.caption(),
@@ -46,11 +60,84 @@ function workerPicture(w, r, buffers, top, hashed) {
   };
 }
 
-// A buffer of `n` bytes for a picture: one the page gave back, else a new one. A run sends
-// a picture every frame: filling the same two buffers again leaves the page no garbage
-function workerSpare(w, n) {
-  const i = w.spares.findIndex((b) => b.byteLength === n);
-  return new Uint8ClampedArray(i < 0 ? new ArrayBuffer(n) : w.spares.splice(i, 1)[0]);
+// Rows of a band of `width` pixels: the core writes the picture and the image a band at a
+// time (a quarter MB of RGBA), so no image-sized buffer is held in its memory or here
+function workerBandRows(width) { return Math.max(1, Math.floor(65536 / Math.max(1, width))); }
+
+// The picture as an ImageBitmap, for the page to draw: the core's bands put into the
+// worker's canvas straight from its memory, then handed over (the canvas keeps nothing)
+function workerBitmap(w, r, heatmap, top, misses, regions) {
+  const width = r.width(), height = r.height(), rows = workerBandRows(width);
+  if (!w.canvas) w.canvas = new OffscreenCanvas(width, height);
+  if (w.canvas.width !== width || w.canvas.height !== height) { w.canvas.width = width; w.canvas.height = height; }
+  const g = w.canvas.getContext('2d');
+  r.beginPicture(heatmap, top, misses, regions);
+  for (let y = 0; y < height; y += rows) {
+    const band = r.pictureRows(y, rows);
+    const n = band.length / (4 * width);
+    g.putImageData(new ImageData(new Uint8ClampedArray(band.buffer, band.byteOffset, band.length), width, n), 0, y);
+  }
+  r.endPicture();
+  return w.canvas.transferToImageBitmap();
+}
+
+// The SHA-256 of the 8-bit RGB image, rows top to bottom (`raycache render --hash`'s), as hex
+// digits: the core's bands hashed as they come, so the image's bytes are never held whole
+// (Web Crypto hashes one buffer only)
+function workerImageHash(r) {
+  const width = r.width(), height = r.height(), rows = workerBandRows(width);
+  const h = workerSha256();
+  for (let y = 0; y < height; y += rows) h.update(r.imageRows(y, rows));
+  return h.hex();
+}
+
+// SHA-256 (FIPS 180-4) fed in pieces: update(bytes) as often as wanted, then hex()
+function workerSha256() {
+  const K = new Uint32Array([
+    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
+    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
+    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
+    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
+    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
+    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
+    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
+    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2]);
+  const H = new Uint32Array([0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                             0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19]);
+  const block = new Uint8Array(64), W = new Uint32Array(64);
+  let used = 0, length = 0;  // bytes in `block`; bytes hashed in all
+  const ror = (x, n) => (x >>> n) | (x << (32 - n));
+  const compress = () => {
+    for (let t = 0; t < 16; ++t)
+      W[t] = (block[4 * t] << 24) | (block[4 * t + 1] << 16) | (block[4 * t + 2] << 8) | block[4 * t + 3];
+    for (let t = 16; t < 64; ++t) {
+      const a = W[t - 15], b = W[t - 2];
+      W[t] = W[t - 16] + (ror(a, 7) ^ ror(a, 18) ^ (a >>> 3)) + W[t - 7] + (ror(b, 17) ^ ror(b, 19) ^ (b >>> 10));
+    }
+    let [a, b, c, d, e, f, g, h] = H;
+    for (let t = 0; t < 64; ++t) {
+      const t1 = (h + (ror(e, 6) ^ ror(e, 11) ^ ror(e, 25)) + ((e & f) ^ (~e & g)) + K[t] + W[t]) | 0;
+      const t2 = ((ror(a, 2) ^ ror(a, 13) ^ ror(a, 22)) + ((a & b) ^ (a & c) ^ (b & c))) | 0;
+      h = g; g = f; f = e; e = (d + t1) | 0; d = c; c = b; b = a; a = (t1 + t2) | 0;
+    }
+    [a, b, c, d, e, f, g, h].forEach((v, i) => { H[i] += v; });
+  };
+  const update = (bytes) => {
+    length += bytes.length;
+    for (let i = 0; i < bytes.length; ++i) {
+      block[used++] = bytes[i];
+      if (used === 64) { compress(); used = 0; }
+    }
+  };
+  const hex = () => {
+    const bits = length * 8;
+    const tail = new Uint8Array((used < 56 ? 56 : 120) - used + 8);
+    tail[0] = 0x80;
+    for (let i = 0; i < 8; ++i) tail[tail.length - 1 - i] = Math.floor(bits / 2 ** (8 * i)) & 0xff;
+    update(tail);
+    return [...H].map((v) => v.toString(16).padStart(8, '0')).join('');
+  };
+  return { update, hex };
 }
 
 // The compared render goes to the first's step: every render has the same rays, so
@@ -76,6 +163,7 @@ function workerFrame(w, extra) {
   w.self.postMessage(Object.assign({ type: 'frame' }, first, {
     compare: second, progress: w.render.progress(), running: w.running,
     heapBytes: w.module.HEAP8.length,  // the WebAssembly memory, for tests/web/page_memory.py
+    generation: w.generation,          // the page's number of the open it answers
   }, extra || {}), buffers);
 }
 
@@ -118,6 +206,7 @@ function workerClaims(w, m) {
 // A new render (and the compared one) of the scene, size and choices the page asks for,
 // on to the tour stop's rays when it shows one
 function workerOpen(w, m) {
+  w.generation = m.generation;
   w.running = null;
   w.selected = null;
   if (m.view) w.view = m.view;
@@ -177,8 +266,8 @@ function workerStep(w, m) {
 }
 
 function workerMessage(w, m) {
-  if (m.type === 'spare') {
-    w.spares = w.spares.concat(m.buffers).slice(-2);  // two: the first render's and the compared one's
+  if (m.type === 'wasm') {
+    workerStart(w, m.bytes);
   } else if (m.type === 'view') {
     w.view = m.view;
     if (w.render) workerFrame(w);
@@ -208,5 +297,5 @@ function workerLoaded(w, module) {
 }
 
 // What the page puts in the worker's source, besides raycache.js's factory
-const renderWorkerParts = [renderWorkerMain, workerPicture, workerSpare, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
+const renderWorkerParts = [renderWorkerMain, workerStart, workerPicture, workerBandRows, workerBitmap, workerImageHash, workerSha256, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
                            workerClaims, workerOpen, workerStep, workerMessage, workerLoaded];

@@ -9,9 +9,9 @@ const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
 const canvas = $('canvas');
 const context = canvas.getContext('2d');
-// The pictures at image size, the first render's and the compared one's: a frame's bytes are
-// put in them when it comes, and not kept
-const layers = [document.createElement('canvas'), document.createElement('canvas')];
+// The pictures at image size, the first render's and the compared one's: the ImageBitmaps the
+// worker made of the last frame's (each closed when the next comes, so only one is held)
+const layers = [null, null];
 let last = null;        // the last frame the worker sent
 let dropped = null;     // {name, text} of a dropped NFF file
 let worker = null;
@@ -37,14 +37,26 @@ function usePalette(p) {
 const rgba = (c, a) => 'rgba(' + c[0] + ',' + c[1] + ',' + c[2] + ',' + (a === undefined ? 1 : a / 255) + ')';
 
 // The worker, from a Blob: raycache.js's factory and the worker's parts (render_worker.js),
-// as source text, then a call of renderWorkerMain
+// as source text, then a call of renderWorkerMain. The factory carries the WebAssembly as a
+// base64 data URI (-sSINGLE_FILE): the worker gets its bytes in a message instead, so that
+// it holds no text copy of them (its source, and the string the factory would make of it)
 function startWorker() {
-  const source = 'var _scriptDir = undefined;\nvar RayCache = ' + RayCache.toString() + ';\n' +
-    renderWorkerParts.map(String).join('\n') + '\nrenderWorkerMain(self, RayCache);\n';
+  let factory = RayCache.toString(), wasm = null;
+  const prefix = 'wasmBinaryFile="data:application/octet-stream;base64,';
+  const begin = factory.indexOf(prefix) + prefix.length, end = factory.indexOf('"', begin);
+  if (begin >= prefix.length && end > begin) {
+    const text = atob(factory.slice(begin, end));
+    wasm = new Uint8Array(text.length);
+    for (let i = 0; i < text.length; ++i) wasm[i] = text.charCodeAt(i);
+    factory = factory.slice(0, begin) + factory.slice(end);
+  }
+  const source = 'var _scriptDir = undefined;\nvar RayCache = ' + factory + ';\n' +
+    renderWorkerParts.map(String).join('\n') + '\nrenderWorkerMain(self, RayCache, ' + !!wasm + ');\n';
   const url = URL.createObjectURL(new Blob([source], { type: 'text/javascript' }));
   worker = new Worker(url);
   worker.onmessage = (e) => onMessage(e.data);
   worker.onerror = (e) => showError('worker: ' + e.message);
+  if (wasm) worker.postMessage({ type: 'wasm', bytes: wasm.buffer }, [wasm.buffer]);
 }
 
 // An error is a sentence in the caption; the picture, key and statistics of what was open
@@ -53,6 +65,7 @@ function showError(message) {
   $('caption').textContent = message;
   $('caption').className = 'error';
   last = null;
+  layers.forEach((b, k) => { if (b) b.close(); layers[k] = null; });
   context.setTransform(1, 0, 0, 1, 0, 0);
   context.clearRect(0, 0, canvas.width, canvas.height);
   for (const id of ['key', 'stats', 'left-out']) $(id).innerHTML = '';
@@ -86,7 +99,7 @@ function openScene(atStop) {
   if (compareCache && compareOrder) m.compare = { cache: compareCache, order: compareOrder };
   if ($('scene').value === 'dropped' && dropped) { m.nff = dropped.text; m.name = dropped.name; }
   else m.scene = sceneSpec($('scene').value);
-  ++generation;
+  m.generation = ++generation;
   $('image-hash').textContent = '';
   $('timing').textContent = '';
   $('caption').className = '';
@@ -139,9 +152,9 @@ function onMessage(m) {
     if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
     if (m.runMs !== undefined && m.runMs !== null)
       $('timing').textContent = 'ran to the end in ' + m.runMs.toFixed(1) + ' ms';
-    // The image's bytes are read for their hash only: not kept with the frame
-    if (m.done && m.image) writeHash(m.image);
-    m.image = null;
+    // The SHA-256 of the 8-bit RGB pixel bytes, rows top to bottom (`raycache render
+    // --hash`'s), which the worker hashed band by band
+    if (m.done && m.imageHash && m.generation === generation) $('image-hash').textContent = m.imageHash;
   }
 }
 
@@ -254,20 +267,13 @@ function fillScenes(list) {
 
 // ---- Drawing ---------------------------------------------------------------------------
 // The picture at image size, as the core made it (the image or the heatmap, the regions
-// of the fill, the misses), put in the layers; its bytes go back to the worker to be filled
-// again
+// of the fill, the misses): the frame's bitmap, in place of the last one
 function paintLayers(m) {
-  const spare = [];
   [m, m.compare].forEach((p, k) => {
-    const layer = layers[k];
-    const [width, height] = p ? [p.width, p.height] : [0, 0];  // none: no memory held for it
-    if (layer.width !== width || layer.height !== height) { layer.width = width; layer.height = height; }
-    if (!p) return;
-    layer.getContext('2d').putImageData(new ImageData(p.layer, width, height), 0, 0);
-    spare.push(p.layer.buffer);
-    p.layer = null;
+    if (layers[k]) layers[k].close();
+    layers[k] = p ? p.layer : null;
+    if (p) p.layer = null;
   });
-  worker.postMessage({ type: 'spare', buffers: spare }, spare);
 }
 
 let drawnShapes = 0;
@@ -310,7 +316,7 @@ function draw() {
 // One render (the `k`th pane), in image coordinates; `px` is one CSS pixel in image units
 function drawPane(m, k, px) {
   context.imageSmoothingEnabled = false;
-  context.drawImage(layers[k], 0, 0);
+  if (layers[k]) context.drawImage(layers[k], 0, 0);
   for (const shape of m.shapes) {
     if (drawShape(shape, px)) { ++drawnShapes; drawnRoles.add(shape.role); }
   }
@@ -505,14 +511,6 @@ function showStatistics(...renders) {
   }
   $('stats').innerHTML = (shown.length > 1 ? '<tr><td></td><td>left</td><td>right</td></tr>' : '') +
     rows.map(([label, key]) => '<tr><td>' + label + '</td>' + shown.map((s) => cell(s, key)).join('') + '</tr>').join('');
-}
-
-// The SHA-256 of the 8-bit RGB pixel bytes, rows top to bottom: `raycache render --hash`'s
-async function writeHash(image) {
-  if (!(window.crypto && crypto.subtle)) { $('image-hash').textContent = 'no Web Crypto here'; return; }
-  const opened = generation;
-  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', image));
-  if (opened === generation) $('image-hash').textContent = [...digest].map((b) => b.toString(16).padStart(2, '0')).join('');
 }
 
 // ---- Controls; the URL's ?scene=S&width=W&height=H&cache=C&order=O&accel=A&run=end sets them

@@ -83,7 +83,7 @@ std::vector<RayTask>& BreadthFirstOrder::newPath(int node) {
     // A path has at most one ray per pixel: room for a band at once, so neither it nor its
     // list of pixels ever grows by copying into fresh memory (each new page is a fault; at
     // 512x512, a third of committed()'s time)
-    if (rays.capacity() == 0) {
+    if (rays.capacity() == 0 && reserveBand_) {
         const std::size_t band = std::size_t(nextRow_ - bandRow_) * width_;
         rays.reserve(band);
         if (!walks_) pixels_[std::size_t(node)].reserve(band);

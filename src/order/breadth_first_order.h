@@ -34,6 +34,7 @@ public:
     std::size_t queuePeak() const override { return peak_; }
     std::int64_t regions() const override { return regions_; }
     FrontierView frontier() const override;
+    void roomAsNeeded() override { reserveBand_ = false; }
     std::unique_ptr<RayOrder> clone() const override { return std::make_unique<BreadthFirstOrder>(*this); }
     void restore(const RayOrder& saved) override { assignKeepingEye(*this, saved); }
     std::size_t heldBytes() const override;
@@ -65,6 +66,7 @@ private:
     int width_, height_, band_, samples_;
     double invWidth_;  ///< 1 / width_
     bool cheapTests_;
+    bool reserveBand_ = true;  ///< make room for a band of rays when a path is met (newPath)
     bool walks_;  ///< one scanline, every ray asked fully: the fill is a walk in pixel order
     EyeMaker makeEye_;
     int bandRow_ = 0;   ///< first scanline of the current band

@@ -64,6 +64,9 @@ public:
     /// traced depth first: then the children's next rays really do start elsewhere.
     virtual bool flushesChildren() const { return false; }
     virtual FrontierView frontier() const { return {}; }
+    /// Let its queues grow as they fill instead of making room for a band of rays up front
+    /// (RenderOptions::reserveRays). Before the first next().
+    virtual void roomAsNeeded() {}
 
     // [order-checkpoint]
     /// A copy of the order as it is now: what it has handed out, queued and deferred. For

@@ -51,6 +51,7 @@ RenderSession::RenderSession(std::shared_ptr<const Scene> scene, RenderOptions o
                            ++primaries_;
                            eyeTask(pixel, sample, t);
                        });
+    if (!options_.reserveRays) order_->roomAsNeeded();
 }
 
 RenderSession::~RenderSession() = default;

@@ -55,6 +55,12 @@ struct RenderOptions {
     /// each other, so a shared entry answers each with what the one before found;
     /// breadth-first order is the same either way (see cache_tree.h).
     SampleEntries sampleEntries = SampleEntries::Shared;
+    /// Breadth-first order: make room for a band of rays in each path as it is met, so no
+    /// path grows by copying into fresh memory (faster natively, where room never filled
+    /// costs nothing). False: paths grow as they fill, for a render whose memory holds all
+    /// it is given (the web page's: WebAssembly memory is resident once allocated and never
+    /// shrinks). The rays and the image are the same either way.
+    bool reserveRays = true;
 };
 
 /// A render in progress. `step()` traces exactly one ray: the order picks it, the cache

@@ -54,6 +54,9 @@ public:
     /// The same bytes written in place: pixel p's at out[p * stride], out[p * stride + 1]
     /// and out[p * stride + 2] (stride 4: into an RGBA picture, its alpha left alone).
     void rgb8Into(std::uint8_t* out, std::size_t stride) const;
+    /// The same for pixels [begin, end) only, pixel `begin`'s bytes at out[0] (a band of
+    /// rows, for a caller that keeps no image-sized buffer).
+    void rgb8Into(std::uint8_t* out, std::size_t stride, int begin, int end) const;
     int width() const { return width_; }
     int height() const { return height_; }
     /// The fixed-point sums of the rows held, 3 per pixel, row after row: what a
@@ -95,11 +98,15 @@ inline std::uint8_t toByte(double v) {
     return std::uint8_t(std::floor(c * 255.0 + 0.5));
 }
 
-inline void ImageAccumulator::rgb8Into(std::uint8_t* out, std::size_t stride) const {
-    for (int p = 0; p < width_ * height_; ++p) {
+inline void ImageAccumulator::rgb8Into(std::uint8_t* out, std::size_t stride, int begin, int end) const {
+    for (int p = begin; p < end; ++p) {
         const Vec3 v = value(p);
-        for (int k = 0; k < 3; ++k) out[std::size_t(p) * stride + std::size_t(k)] = toByte(v[k]);
+        for (int k = 0; k < 3; ++k) out[std::size_t(p - begin) * stride + std::size_t(k)] = toByte(v[k]);
     }
+}
+
+inline void ImageAccumulator::rgb8Into(std::uint8_t* out, std::size_t stride) const {
+    rgb8Into(out, stride, 0, width_ * height_);
 }
 
 inline std::vector<std::uint8_t> ImageAccumulator::rgb8() const {

@@ -25,16 +25,20 @@ std::optional<double> testsHeat(const TraceRecorder& rec, int px, double top) {
 std::vector<std::uint8_t> testsHeatmapRgba(const TraceRecorder& rec, double top) {
     const int n = rec.width() * rec.height();
     std::vector<std::uint8_t> out(std::size_t(n) * 4, 0);
-    for (int px = 0; px < n; ++px) {
+    testsHeatmapRgbaInto(rec, top, out.data(), 0, n);
+    return out;
+}
+
+void testsHeatmapRgbaInto(const TraceRecorder& rec, double top, std::uint8_t* out, int begin, int end) {
+    for (int px = begin; px < end; ++px) {
         const std::optional<double> t = testsHeat(rec, px, top);
         const Rgb c = t ? heatRamp(*t) : Rgb{};
-        std::uint8_t* d = &out[std::size_t(px) * 4];
+        std::uint8_t* d = &out[std::size_t(px - begin) * 4];
         d[0] = c.r;
         d[1] = c.g;
         d[2] = c.b;
         d[3] = 255;
     }
-    return out;
 }
 
 }  // namespace rc

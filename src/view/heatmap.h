@@ -21,5 +21,8 @@ std::optional<double> testsHeat(const TraceRecorder& rec, int px, double top);
 /// The tests heatmap of the whole image as 8-bit RGBA, rows top to bottom, untraced pixels
 /// black (the page's picture; the Qt window sets the same colours in a QImage).
 std::vector<std::uint8_t> testsHeatmapRgba(const TraceRecorder& rec, double top);
+/// The same for pixels [begin, end) only, written at out[0..4 (end - begin)) (a band of rows:
+/// the page keeps no picture-sized buffer).
+void testsHeatmapRgbaInto(const TraceRecorder& rec, double top, std::uint8_t* out, int begin, int end);
 
 }  // namespace rc

@@ -22,6 +22,7 @@ void TraceRecorder::dropTallies() {
     for (auto* v : {&hits_, &missCount_}) std::vector<std::uint32_t>().swap(*v);
     std::vector<std::int32_t>().swap(firstVisit_);
     std::vector<std::uint8_t>().swap(missReason_);
+    std::vector<std::int32_t>().swap(tests_);
     visited_.assign(n, false);
     talliesDropped_ = true;
 }
@@ -32,7 +33,6 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
     events_.push_back(EventRecord::from(e, region, lastOfPixel_[p]));
     const int index = int(events_.size()) - 1;
     lastOfPixel_[p] = index;
-    tests_[p] += e.tests;
     last_ = e;
     if (talliesDropped_) {
         if (!e.deferred) {
@@ -41,6 +41,8 @@ void TraceRecorder::onEvent(const rc::TraceEvent& e) {
         }
         return;
     }
+    tests_[p] += e.tests;
+    testsRead_ = events_.size();
     if (e.deferred) {
         misses_.push_back(index);
         return;
@@ -59,6 +61,15 @@ std::size_t TraceRecorder::pixelBytes() const {
     const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(lastOfPixel_) + bytes(tests_) + bytes(hits_) + bytes(missCount_) + bytes(firstVisit_) +
            bytes(missReason_) + (visited_.capacity() + 7) / 8;
+}
+
+void TraceRecorder::readTests() const {
+    if (tests_.empty()) tests_.assign(std::size_t(width_) * height_, 0);
+    for (auto it = events_.from(testsRead_); it != events_.end(); ++it) {
+        const EventRecord r = *it;
+        tests_[std::size_t(r.pixel)] += r.tests;
+    }
+    testsRead_ = events_.size();
 }
 
 std::vector<int> TraceRecorder::eventsOf(int pixel) const {
@@ -102,7 +113,7 @@ void TraceRecorder::rollback(const Mark& m) {
         if (i < m.events) return true;
         const int p = r.pixel;
         lastOfPixel_[p] = r.previous;
-        tests_[p] -= r.tests;
+        if (i < testsRead_) tests_[p] -= r.tests;  // counted (tallies dropped: if read)
         if (r.deferred()) return false;
         if (talliesDropped_) {
             if (visited_[std::size_t(p)]) unvisited.push_back(p);
@@ -117,6 +128,7 @@ void TraceRecorder::rollback(const Mark& m) {
     });
     events_.truncate(m.events);
     misses_.truncate(m.misses);
+    testsRead_ = std::min(testsRead_, m.events);
     // A pixel is still visited when a committed event of it is left
     for (const int p : unvisited)
         for (int i = lastOfPixel_[p]; i >= 0 && !visited_[std::size_t(p)];) {

@@ -33,9 +33,10 @@ public:
     const EventLog& events() const { return events_; }
     /// Keep no event's ray (EventLog::dropRays); before the first event.
     void dropRays() { events_.dropRays(); }
-    /// Keep only the tallies the page reads (tests and whether a pixel was visited), not
-    /// hits, misses, first visits and miss reasons (4 bytes a pixel and a bit, not 17), nor
-    /// the index of misses (the Qt GUI's event log panel reads it). Before the first event;
+    /// Keep only the tallies the page reads (whether a pixel was visited, and its tests once
+    /// asked: testsAt()), not hits, misses, first visits and miss reasons (a bit a pixel, 4
+    /// bytes more with the tests, not 17), nor the index of misses (the Qt GUI's event log
+    /// panel reads it). Before the first event;
     /// misses(), hitsAt(), missesAt(), firstVisit() and missReasonAt() then throw.
     void dropTallies();
     /// Are they left out (dropTallies())?
@@ -58,7 +59,13 @@ public:
     /// The committed event of `pixel` at path `node`, or -1.
     int eventAt(int pixel, int node) const;
 
-    std::int32_t testsAt(int pixel) const { return tests_[pixel]; }
+    /// Ray-object tests of every ray of the pixel. With the tallies dropped they are counted
+    /// from the log when first asked (the page's tests heatmap), and from then on kept up
+    /// with it: a page that never shows the heatmap holds no tally of its tests.
+    std::int32_t testsAt(int pixel) const {
+        if (testsRead_ != events_.size()) readTests();
+        return tests_[std::size_t(pixel)];
+    }
     /// Committed cache hits and misses of every ray of the pixel (all samples): a pixel of
     /// 256 samples with 64 shadow rays each makes more lookups than 16 bits hold.
     std::uint32_t hitsAt(int pixel) const { return kept(hits_)[std::size_t(pixel)]; }
@@ -103,8 +110,14 @@ private:
     const rc::RayOrder* order_;
     EventLog events_;
     BlockVector<std::int32_t> misses_;
+    /// Counts the tests of the events from testsRead_ on into tests_ (with the tallies
+    /// dropped; kept, onEvent() counts them)
+    void readTests() const;
+
     std::vector<std::int32_t> lastOfPixel_;
-    std::vector<std::int32_t> tests_;
+    /// Tests by pixel, of the first testsRead_ events (empty until read, tallies dropped)
+    mutable std::vector<std::int32_t> tests_;
+    mutable std::size_t testsRead_ = 0;
     std::vector<std::uint32_t> hits_, missCount_;
     /// A step fits 32 bits as an event's index does: a step is counted in committed
     /// events, and the log numbers its events in 32 bits (EventRecord::step, lastOfPixel_).
