@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Measures the page's memory against native's for one render run to the end: the page in
 headless Chromium, the Qt GUI rendering the same headless to a screenshot (its peak resident
-memory, /usr/bin/time's) and, with --cli, `raycache render` (the same). The page's figures,
+memory) and, with --cli, `raycache render` (the same). The page's figures,
 after the run:
 - all: the resident memory of every renderer process of the browser (the page's, the blank
   page it started from, the spare one), Chromium's shared code counted once per process;
@@ -62,23 +62,28 @@ def page(a, size):
         browser.close()
 
 
+def peak_rss_mb(cmd, env=None):
+    """The peak resident memory of the process `cmd` runs, in MB (its own rusage, read by
+    os.wait4: no /usr/bin/time needed); None when it failed."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    return usage.ru_maxrss / 1024 if proc.returncode == 0 else None
+
+
 def native(a, size):
+    """The Qt GUI's peak resident memory rendering the same, headless, to a screenshot."""
     with tempfile.TemporaryDirectory() as d:
         env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
-        r = subprocess.run(["/usr/bin/time", "-v", a.gui, a.scene, "--width", str(size), "--height", str(size),
-                            "--cache", a.cache, "--order", a.order, "--steps", str(10 ** 12),
-                            "--screenshot", str(pathlib.Path(d) / "shot.png")],
-                           capture_output=True, text=True, env=env)
-        m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", r.stderr)
-        return int(m.group(1)) / 1024 if m else None
+        return peak_rss_mb([a.gui, a.scene, "--width", str(size), "--height", str(size), "--cache", a.cache,
+                            "--order", a.order, "--steps", str(10 ** 12),
+                            "--screenshot", str(pathlib.Path(d) / "shot.png")], env)
 
 
 def cli_rss_mb(a, size):
     """`raycache render`'s peak resident memory for the same render (no viewer's records)."""
-    r = subprocess.run(["/usr/bin/time", "-v", a.cli, "render", a.scene, "--width", str(size), "--height", str(size),
-                        "--cache", a.cache, "--order", a.order, "-q", "--hash"], capture_output=True, text=True)
-    m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", r.stderr)
-    return int(m.group(1)) / 1024 if m else None
+    return peak_rss_mb([a.cli, "render", a.scene, "--width", str(size), "--height", str(size),
+                        "--cache", a.cache, "--order", a.order, "-q", "--hash"])
 
 
 def main():
@@ -105,6 +110,9 @@ def main():
             print(f"  page: all renderers {mb(web['all'])}, its own {mb(web['own'])} "
                   f"(WebAssembly heap {mb(web['heap'])})")
         print(f"  native GUI {mb(gui)} (peak resident)" + (f", raycache render {mb(cli)}" if cli else ""))
+        if a.limit and not (web and cli):
+            print("  not measured: the page's run did not end or raycache render failed")
+            over = True
         if web and cli:
             ratio = web["own"] / cli
             print(f"  page's own / raycache render: {ratio:.1f}x" + (f" (limit {a.limit}x)" if a.limit else ""))
