@@ -31,10 +31,13 @@ int main(int argc, char* argv[]) {
     }
     // A check that runs the renderer runs the earlier tutorials' holes too: when one of them
     // is still its stub, a correct answer here can fail for that alone, so the verdict names
-    // the tutorial to do first (one sentence, the renderer's own for tutorial 01)
+    // the earliest such tutorial to do first (one sentence, the renderer's own for tutorial 01).
+    // Only earlier ones: a later tutorial's stub (06's textbook roots in every render) is what
+    // a student working in order still has, and is never a reason to skip ahead. Nothing is
+    // named when this tutorial's own stub ran: that is the first thing to do.
     std::string first;
-    for (int k = 1; k <= 7 && first.empty(); ++k)
-        if (k != nn && rc::stubRan(k))
+    for (int k = 1; k < nn && first.empty() && !rc::stubRan(nn); ++k)
+        if (rc::stubRan(k))
             first = k == 1 ? rc::cannotDrawYet()
                            : "This check ran tutorial " + std::string(k < 10 ? "0" : "") + std::to_string(k) +
                                  "'s stub as shipped, so do tutorial " + std::string(k < 10 ? "0" : "") +
@@ -43,7 +46,7 @@ int main(int argc, char* argv[]) {
         std::printf("\nSOLVED: every check passes.\n");
     } else {
         std::printf(
-            "\nNOT YET: %d check(s) failed. Read the first failure above: its test case names the\n"
+            "\nNOT YET: %d assertion(s) failed. Read the first failure above: its test case names the\n"
             "rule your code breaks, and the lines after \"with messages:\" give the case, the\n"
             "expected value and yours. The tutorial's page has hints, from a nudge to a\n"
             "near-solution.\n",
