@@ -38,13 +38,14 @@ function workerStart(w, bytes) {
 
 // What the page draws of one render: its picture at image size, made by the core (the
 // image or the heatmap up to `top`, regions, misses), and the shapes and key of the ray
-// in focus. The image's hash once it is complete (`hashed`: the page shows the first
+// in focus. The image's bytes once it is complete, for its hash (`hashed`: the page shows the first
 // render's only).
 function workerPicture(w, r, buffers, top, hashed) {
   const view = w.view;
   const layer = workerBitmap(w, r, view.heatmap, top, view.misses, view.frontier);
-  const imageHash = hashed && r.done() ? workerImageHash(r) : null;
+  const image = hashed && r.done() ? workerImageBytes(r) : null;
   buffers.push(layer);
+  if (image) buffers.push(image.buffer);
   const width = r.width(), height = r.height();
   const c = view.clip || [0, 0, width, height];
   // The margin keeps cut edges off the picture (as the Qt GUI's)
@@ -52,7 +53,7 @@ function workerPicture(w, r, buffers, top, hashed) {
   const shapes = view.cylinder || view.hull
     ? r.shapes(view.cylinder, view.hull, c[0] - mx, c[1] - my, c[2] + mx, c[3] + my) : [];
   return {
-    width, height, layer, imageHash, heatTop: top, shapes,
+    width, height, layer, image, heatTop: top, shapes,
     frontier: view.frontier ? r.frontier() : null, legend: r.legend(),
     keys: JSON.parse(r.keys(view.cylinder, view.hull, view.frontier, view.misses)),
     statistics: JSON.parse(r.statistics()), caption: r.caption(),
@@ -81,63 +82,14 @@ function workerBitmap(w, r, heatmap, top, misses, regions) {
   return w.canvas.transferToImageBitmap();
 }
 
-// The SHA-256 of the 8-bit RGB image, rows top to bottom (`raycache render --hash`'s), as hex
-// digits: the core's bands hashed as they come, so the image's bytes are never held whole
-// (Web Crypto hashes one buffer only)
-function workerImageHash(r) {
+// The 8-bit RGB image, rows top to bottom, put together from the core's bands (no image
+// buffer in the core's memory), for the page to hash with Web Crypto as `raycache render
+// --hash` does; handed over, not copied, and dropped once hashed
+function workerImageBytes(r) {
   const width = r.width(), height = r.height(), rows = workerBandRows(width);
-  const h = workerSha256();
-  for (let y = 0; y < height; y += rows) h.update(r.imageRows(y, rows));
-  return h.hex();
-}
-
-// SHA-256 (FIPS 180-4) fed in pieces: update(bytes) as often as wanted, then hex()
-function workerSha256() {
-  const K = new Uint32Array([
-    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
-    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
-    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
-    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
-    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
-    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
-    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
-    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2]);
-  const H = new Uint32Array([0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                             0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19]);
-  const block = new Uint8Array(64), W = new Uint32Array(64);
-  let used = 0, length = 0;  // bytes in `block`; bytes hashed in all
-  const ror = (x, n) => (x >>> n) | (x << (32 - n));
-  const compress = () => {
-    for (let t = 0; t < 16; ++t)
-      W[t] = (block[4 * t] << 24) | (block[4 * t + 1] << 16) | (block[4 * t + 2] << 8) | block[4 * t + 3];
-    for (let t = 16; t < 64; ++t) {
-      const a = W[t - 15], b = W[t - 2];
-      W[t] = W[t - 16] + (ror(a, 7) ^ ror(a, 18) ^ (a >>> 3)) + W[t - 7] + (ror(b, 17) ^ ror(b, 19) ^ (b >>> 10));
-    }
-    let [a, b, c, d, e, f, g, h] = H;
-    for (let t = 0; t < 64; ++t) {
-      const t1 = (h + (ror(e, 6) ^ ror(e, 11) ^ ror(e, 25)) + ((e & f) ^ (~e & g)) + K[t] + W[t]) | 0;
-      const t2 = ((ror(a, 2) ^ ror(a, 13) ^ ror(a, 22)) + ((a & b) ^ (a & c) ^ (b & c))) | 0;
-      h = g; g = f; f = e; e = (d + t1) | 0; d = c; c = b; b = a; a = (t1 + t2) | 0;
-    }
-    [a, b, c, d, e, f, g, h].forEach((v, i) => { H[i] += v; });
-  };
-  const update = (bytes) => {
-    length += bytes.length;
-    for (let i = 0; i < bytes.length; ++i) {
-      block[used++] = bytes[i];
-      if (used === 64) { compress(); used = 0; }
-    }
-  };
-  const hex = () => {
-    const bits = length * 8;
-    const tail = new Uint8Array((used < 56 ? 56 : 120) - used + 8);
-    tail[0] = 0x80;
-    for (let i = 0; i < 8; ++i) tail[tail.length - 1 - i] = Math.floor(bits / 2 ** (8 * i)) & 0xff;
-    update(tail);
-    return [...H].map((v) => v.toString(16).padStart(8, '0')).join('');
-  };
-  return { update, hex };
+  const image = new Uint8Array(width * height * 3);
+  for (let y = 0; y < height; y += rows) image.set(r.imageRows(y, rows), y * width * 3);
+  return image;
 }
 
 // The compared render goes to the first's step: every render has the same rays, so
@@ -297,5 +249,5 @@ function workerLoaded(w, module) {
 }
 
 // What the page puts in the worker's source, besides raycache.js's factory
-const renderWorkerParts = [renderWorkerMain, workerStart, workerPicture, workerBandRows, workerBitmap, workerImageHash, workerSha256, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
+const renderWorkerParts = [renderWorkerMain, workerStart, workerPicture, workerBandRows, workerBitmap, workerImageBytes, workerSyncCompare, workerFrame, workerTick, workerGoToStop,
                            workerClaims, workerOpen, workerStep, workerMessage, workerLoaded];

@@ -152,9 +152,7 @@ function onMessage(m) {
     if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
     if (m.runMs !== undefined && m.runMs !== null)
       $('timing').textContent = 'ran to the end in ' + m.runMs.toFixed(1) + ' ms';
-    // The SHA-256 of the 8-bit RGB pixel bytes, rows top to bottom (`raycache render
-    // --hash`'s), which the worker hashed band by band
-    if (m.done && m.imageHash && m.generation === generation) $('image-hash').textContent = m.imageHash;
+    if (m.done && m.image && m.generation === generation) writeHash(m.image);
   }
 }
 
@@ -511,6 +509,14 @@ function showStatistics(...renders) {
   }
   $('stats').innerHTML = (shown.length > 1 ? '<tr><td></td><td>left</td><td>right</td></tr>' : '') +
     rows.map(([label, key]) => '<tr><td>' + label + '</td>' + shown.map((s) => cell(s, key)).join('') + '</tr>').join('');
+}
+
+// The SHA-256 of the 8-bit RGB pixel bytes, rows top to bottom: `raycache render --hash`'s
+async function writeHash(image) {
+  if (!(window.crypto && crypto.subtle)) { $('image-hash').textContent = 'no Web Crypto here'; return; }
+  const opened = generation;
+  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', image));
+  if (opened === generation) $('image-hash').textContent = [...digest].map((b) => b.toString(16).padStart(2, '0')).join('');
 }
 
 // ---- Controls; the URL's ?scene=S&width=W&height=H&cache=C&order=O&accel=A&run=end sets them
