@@ -5,9 +5,15 @@
 // sampled at points along the new segment, and the radius against the gap to the nearest
 // other sphere by that distance, on random cases and on cube:4's eye rays. Then what the renderer makes of them: the cylinder cache's
 // picture of cube:4 equals the uncached one, and its hits fall in a stated range.
+//
+// Each run shows your functions every recorded case in a frame of its own
+// (tutorial_frame.h): its points and spheres rotated, moved and scaled by a power of two,
+// drawn from a seed (std::random_device, or $TUTORIAL_02_SEED to repeat a run; failures
+// print it). An expected distance is the recorded one times the scale.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <utility>
@@ -24,6 +30,7 @@
 #include "scene/builtin_scenes.h"
 #include "search/linear_search.h"
 #include "oracles.h"
+#include "tutorial_frame.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -31,6 +38,34 @@ namespace {
 double closeEnough(double scale) { return 1e-9 * std::max(1.0, scale); }
 
 using tutorial::segmentGap;
+
+// The run's seed, said with every failure so that the run can be repeated
+std::uint64_t runSeed() {
+    static const std::uint64_t seed = tutorial::runSeed("TUTORIAL_02_SEED");
+    return seed;
+}
+std::string seedNote() {
+    return " [this run's frames: TUTORIAL_02_SEED=" + std::to_string(runSeed()) + " repeats them]";
+}
+
+// A frame for a case of size about `size`: shifts up to 10 sizes, so that the rotation and
+// shift round the coordinates your code sees by some 1e-14 sizes, 10^5 times inside the
+// check's tolerance (1e-9 of the size). Your functions' answers in the frame, brought back
+// to the case's units (the scale is a power of two: dividing by it rounds nothing)
+tutorial::Frame frame(tutorial::Random& frames, double size) { return tutorial::randomFrame(frames, 10.0 * size, 4); }
+double yourDistance(const tutorial::Frame& f, const rc::Vec3& p, const rc::Vec3& a, const rc::Vec3& b) {
+    return rc::segmentDistance(f.point(p), f.point(a), f.point(b)) / f.scale;
+}
+double yourRadius(const tutorial::Frame& f, const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a,
+                  const rc::Vec3& b) {
+    std::vector<rc::Sphere> moved;
+    for (const rc::Sphere& s : spheres) moved.push_back(f.sphere(s));
+    return rc::safetyRadius(moved, hit, f.point(a), f.point(b)) / f.scale;
+}
+bool yourContains(const tutorial::Frame& f, const rc::Vec3& a, const rc::Vec3& b, double radius, const rc::Vec3& p,
+                  const rc::Vec3& q) {
+    return rc::SafetyCylinder{f.point(a), f.point(b), f.scale * radius}.contains(f.point(p), f.point(q));
+}
 
 // Where `ray` meets sphere `s` (kNoHit if it does not), by the library's textbook roots, not by
 // rc::sphereRootsStable: that is tutorial 06's exercise, and this check must not wait for it
@@ -50,7 +85,8 @@ struct Capsule {
 }  // namespace
 
 TEST_CASE("segmentDistance agrees with the oracle on random points and segments", "[tutorial02]") {
-    tutorial::Random rnd(1985);
+    INFO("each case is shown to your code rotated, moved and scaled" << seedNote());
+    tutorial::Random rnd(1985), frames(rc::mixKey(runSeed(), 1));
     for (int i = 0; i < 3000; ++i) {
         const double scale = rnd.logUniform(-3.0, 4.0);
         const rc::Vec3 a = scale * rnd.inBox(1.0);
@@ -59,12 +95,13 @@ TEST_CASE("segmentDistance agrees with the oracle on random points and segments"
         const rc::Vec3 p = scale * rnd.inBox(2.0);
         const double want = segmentGap(p, a, b);
         INFO(std::setprecision(17) << "case " << i << ": scale " << scale << ", expected " << want);
-        REQUIRE(std::abs(rc::segmentDistance(p, a, b) - want) <= closeEnough(scale));
+        REQUIRE(std::abs(yourDistance(frame(frames, scale), p, a, b) - want) <= closeEnough(scale));
     }
 }
 
 TEST_CASE("contains holds what the sampled capsule holds", "[tutorial02]") {
-    tutorial::Random rnd(85);
+    INFO("each case is shown to your code rotated, moved and scaled" << seedNote());
+    tutorial::Random rnd(85), frames(rc::mixKey(runSeed(), 2));
     int inside = 0, tested = 0, oneEndOnly = 0;
     for (int i = 0; i < 3000; ++i) {
         Capsule cyl{rnd.inBox(5.0), rnd.inBox(5.0), rnd.uniform(0.1, 3.0)};
@@ -84,7 +121,7 @@ TEST_CASE("contains holds what the sampled capsule holds", "[tutorial02]") {
                      << glm::length(cyl.b - cyl.a) << "; p is " << (dp <= 0 ? "inside" : "outside")
                      << ", q is " << (dq <= 0 ? "inside" : "outside") << "; expected "
                      << (want ? "inside" : "not inside"));
-        REQUIRE(rc::SafetyCylinder{cyl.a, cyl.b, cyl.radius}.contains(p, q) == want);
+        REQUIRE(yourContains(frame(frames, 5.0), cyl.a, cyl.b, cyl.radius, p, q) == want);
         inside += want;
         oneEndOnly += (dp <= 0) != (dq <= 0);
         ++tested;
@@ -103,13 +140,14 @@ double gap(const std::vector<rc::Sphere>& spheres, int hit, const rc::Vec3& a, c
 }  // namespace
 
 TEST_CASE("safetyRadius is the gap to the nearest other sphere", "[tutorial02]") {
-    tutorial::Random rnd(1985);
+    INFO("each case is shown to your code rotated, moved and scaled" << seedNote());
+    tutorial::Random rnd(1985), frames(rc::mixKey(runSeed(), 3));
     for (int i = 0; i < 1000; ++i) {
         std::vector<rc::Sphere> spheres(1 + rnd.index(12));
         for (rc::Sphere& s : spheres) s = {rnd.inBox(6.0), rnd.uniform(0.1, 1.5)};
         const int hit = rnd.index(int(spheres.size()));
         const rc::Vec3 a = rnd.inBox(6.0), b = i % 7 == 0 ? a : rnd.inBox(6.0);
-        const double want = gap(spheres, hit, a, b), got = rc::safetyRadius(spheres, hit, a, b);
+        const double want = gap(spheres, hit, a, b), got = yourRadius(frame(frames, 6.0), spheres, hit, a, b);
         INFO(std::setprecision(17) << "case " << i << ": " << spheres.size() << " spheres, the ray hit sphere " << hit << "; expected radius "
                      << want << ", yours " << got
                      << (spheres.size() == 1 ? " (no other sphere: nothing limits the capsule)" : ""));
@@ -160,6 +198,9 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
                                   picture);
     }
     INFO(std::setprecision(17) << "your cylinders on cube:4 (magenta: answered differently from the oracle): " << picture);
+    INFO("cube:4 is shown to your code rotated, moved and scaled; the numbers below are the scene's" << seedNote());
+    tutorial::Random frames(rc::mixKey(runSeed(), 4));
+    const tutorial::Frame moved = frame(frames, 20.0);
     int hits = 0, tested = 0;
     for (int p = 0; p + 1 < n * n; ++p) {
         rc::Query q;
@@ -171,7 +212,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
         if (!(th < rc::kNoHit)) continue;  // grazing: the textbook roots miss
         const rc::Vec3 h = q.ray.at(th);
         const double want = gap(spheres, hit.object, q.ray.o, h);
-        const double mine = rc::safetyRadius(spheres, hit.object, q.ray.o, h);
+        const double mine = yourRadius(moved, spheres, hit.object, q.ray.o, h);
         INFO(std::setprecision(17) << "pixel (" << p % n << ", " << p / n << "): expected radius " << want << ", yours " << mine);
         REQUIRE(std::abs(mine - want) <= closeEnough(20.0));
         // The next pixel's ray, to the same sphere: would the cylinder answer it?
@@ -184,7 +225,7 @@ TEST_CASE("the safety radius and a cache hit on cube:4's eye rays", "[tutorial02
         const double d2 = segmentGap(h2, q.ray.o, h) - want;
         if (std::abs(d2) < 1e-9) continue;
         INFO(std::setprecision(17) << "the next pixel's segment to the same sphere");
-        REQUIRE(rc::SafetyCylinder{q.ray.o, h, mine}.contains(next.ray.o, h2) == cyl.contains(next.ray.o, h2));
+        REQUIRE(yourContains(moved, q.ray.o, h, mine, next.ray.o, h2) == cyl.contains(next.ray.o, h2));
         hits += cyl.contains(next.ray.o, h2);
         ++tested;
     }

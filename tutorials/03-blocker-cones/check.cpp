@@ -3,11 +3,19 @@
 // reference's. The blocker lists of cube:4 are checked against lists the oracle builds
 // sphere by sphere. The oracle's answers are data (oracles.h, oracle_data.txt); the oracle
 // stays with the instructor.
+//
+// Each run shows your hull every case in a frame of its own (tutorial_frame.h): the spheres
+// and the point rotated, moved and scaled by a power of two, drawn from a seed
+// (std::random_device, or $TUTORIAL_03_SEED to repeat a run; failures print it); cube:4 is
+// shown moved the same way, its spheres numbered in a shuffled order. The expected
+// distance is the recorded one times the scale.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -19,6 +27,7 @@
 #include "search/blocker_lists.h"
 #include "search/linear_search.h"
 #include "oracles.h"
+#include "tutorial_frame.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -28,6 +37,23 @@ using tutorial::hullGap;
 
 // Your hull's distance
 double yours(const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) { return rc::Hull(a, b).distance(p); }
+
+// The run's seed, said with every failure so that the run can be repeated
+std::uint64_t runSeed() {
+    static const std::uint64_t seed = tutorial::runSeed("TUTORIAL_03_SEED");
+    return seed;
+}
+std::string seedNote() {
+    return " [this run's frames: TUTORIAL_03_SEED=" + std::to_string(runSeed()) + " repeats them]";
+}
+
+// Your hull's distance in the frame `f`, brought back to the case's units (the scale is a
+// power of two: dividing by it rounds nothing). The frame's rotation and shift round the
+// coordinates your hull sees by a few ulps of 20 (its shifts reach 10, the cases' points
+// 6): some 1e-14 in distance, 10^5 times inside kRelativeTolerance
+double yours(const tutorial::Frame& f, const rc::Vec3& p, const rc::Sphere& a, const rc::Sphere& b) {
+    return yours(f.point(p), f.sphere(a), f.sphere(b)) / f.scale;
+}
 
 // A random pair of spheres: ordinary, one a point (the eye, a light), equal radii (a
 // cylinder), or one inside the other
@@ -103,7 +129,9 @@ constexpr double kMaxExtraFactor = 1.01;
 
 TEST_CASE("hullDistance is exact outside the hull and never puts a point of the hull outside it", "[tutorial03]") {
     INFO(std::setprecision(17) << "your hull in a slice through its axis (magenta: left out): " << drawHull());
+    INFO("each case is shown to your hull rotated, moved and scaled; the numbers below are the case's own" << seedNote());
     tutorial::Random rnd(1986);
+    tutorial::Random frames(rc::mixKey(runSeed(), 1));
     int outside = 0, inside = 0;
     for (int i = 0; i < 5000; ++i) {
         rc::Sphere a, b;
@@ -113,7 +141,8 @@ TEST_CASE("hullDistance is exact outside the hull and never puts a point of the 
                                  : a.c + rnd.uniform(-0.2, 1.2) * (b.c - a.c) +
                                        rnd.uniform(0.0, 1.5) * std::max(a.r, b.r) * rnd.direction();
         const double want = double(hullGap(p, a, b));
-        const double got = yours(p, a, b);
+        const tutorial::Frame frame = tutorial::randomFrame(frames, 10.0, 4);
+        const double got = yours(frame, p, a, b);
         INFO(std::setprecision(17) << "case " << i << ": a = (" << a.c.x << ", " << a.c.y << ", " << a.c.z << ") r " << a.r << ", b = ("
                      << b.c.x << ", " << b.c.y << ", " << b.c.z << ") r " << b.r << "; p = (" << p.x << ", " << p.y
                      << ", " << p.z << "); expected " << want << ", got " << got);
@@ -141,7 +170,9 @@ TEST_CASE("hullDistance is exact outside the hull and never puts a point of the 
 }
 
 TEST_CASE("meetsHull decisions built on hullDistance keep every sphere that meets the hull", "[tutorial03]") {
+    INFO("each case is shown to your hull rotated, moved and scaled" << seedNote());
     tutorial::Random rnd(1984);
+    tutorial::Random frames(rc::mixKey(runSeed(), 2));
     int meets = 0, extra = 0;
     for (int i = 0; i < 5000; ++i) {
         rc::Sphere a, b;
@@ -153,7 +184,7 @@ TEST_CASE("meetsHull decisions built on hullDistance keep every sphere that meet
         const double margin = double(hullGap(s.c, a, b)) - s.r;
         if (std::abs(margin) < 1e-7) continue;  // within rounding of touching
         const bool want = margin <= 0.0;
-        const bool mine = yours(s.c, a, b) <= s.r;
+        const bool mine = yours(tutorial::randomFrame(frames, 10.0, 4), s.c, a, b) <= s.r;
         INFO(std::setprecision(17) << "case " << i << ": a sphere that meets the hull, left out");
         if (want) REQUIRE(mine);
         meets += want;
@@ -174,30 +205,45 @@ TEST_CASE("blocker lists of cube:4 built with your hull hold the oracle's", "[tu
     for (int id = 0; id < s.size(); ++id) sites.push_back(id);
     sites.push_back(lists.eyeSite());
     for (int k = 0; k < int(s.lights.size()); ++k) sites.push_back(lists.lightSite(k));
-    long nonEmpty = 0, libraryTotal = 0, extra = 0;
+    // The scene as your hull sees it this run: moved by a random frame, sphere j numbered
+    // shown[j], the pairs asked in a shuffled order; your lists are mapped back to the
+    // scene's numbers
+    INFO("cube:4 is shown to your hull rotated, moved, scaled and renumbered; the numbers below are the scene's"
+         << seedNote());
+    tutorial::Random rnd(rc::mixKey(runSeed(), 3));
+    const tutorial::Frame frame = tutorial::randomFrame(rnd, 10.0, 4);
+    std::vector<int> shown(spheres.size()), scene(spheres.size());
+    for (int j = 0; j < s.size(); ++j) shown[j] = j;
+    for (int j = s.size() - 1; j > 0; --j) std::swap(shown[j], shown[rnd.index(j + 1)]);
+    std::vector<rc::Sphere> moved(spheres.size());
+    for (int j = 0; j < s.size(); ++j) moved[shown[j]] = frame.sphere(spheres[j]), scene[shown[j]] = j;
+    std::vector<std::pair<int, int>> pairs;
     for (int origin : sites)
-        for (int target : sites) {
-            if (origin == target) continue;
-            const rc::Sphere a = lists.siteSphere(origin), b = lists.siteSphere(target);
-            const rc::Hull hull(a, b);
-            std::vector<int> mine;
-            for (int id = 0; id < s.size(); ++id) {
-                if (id == target) continue;
-                const rc::Sphere& bound = s.objects[id].bound;
-                if (hull.distance(bound.c) <= bound.r) mine.push_back(id);
-            }
-            // The oracle's list: every sphere but the target that meets the hull by more than rounding
-            const std::vector<int> want = tutorial::blockerList(a, b, spheres, target);
-            std::vector<int> missing;
-            std::set_difference(want.begin(), want.end(), mine.begin(), mine.end(), std::back_inserter(missing));
-            INFO(std::setprecision(17) << "origin site " << origin << ", target site " << target << ": your list leaves out "
-                                << missing.size() << " potential blocker(s), the first is sphere "
-                                << (missing.empty() ? -1 : missing.front()));
-            REQUIRE(missing.empty());
-            extra += long(mine.size() - want.size());
-            libraryTotal += long(want.size());
-            nonEmpty += !want.empty();
+        for (int target : sites)
+            if (origin != target) pairs.emplace_back(origin, target);
+    for (int k = int(pairs.size()) - 1; k > 0; --k) std::swap(pairs[k], pairs[rnd.index(k + 1)]);
+    long nonEmpty = 0, libraryTotal = 0, extra = 0;
+    for (const auto& [origin, target] : pairs) {
+        const rc::Sphere a = lists.siteSphere(origin), b = lists.siteSphere(target);
+        const rc::Hull hull(frame.sphere(a), frame.sphere(b));
+        std::vector<int> mine;
+        for (int k = 0; k < s.size(); ++k) {
+            if (scene[k] == target) continue;
+            if (hull.distance(moved[k].c) <= moved[k].r) mine.push_back(scene[k]);
         }
+        std::sort(mine.begin(), mine.end());
+        // The oracle's list: every sphere but the target that meets the hull by more than rounding
+        const std::vector<int> want = tutorial::blockerList(a, b, spheres, target);
+        std::vector<int> missing;
+        std::set_difference(want.begin(), want.end(), mine.begin(), mine.end(), std::back_inserter(missing));
+        INFO(std::setprecision(17) << "origin site " << origin << ", target site " << target << ": your list leaves out "
+                            << missing.size() << " potential blocker(s), the first is sphere "
+                            << (missing.empty() ? -1 : missing.front()));
+        REQUIRE(missing.empty());
+        extra += long(mine.size() - want.size());
+        libraryTotal += long(want.size());
+        nonEmpty += !want.empty();
+    }
     WARN("cube:4's blocker lists: the oracle's hold " << libraryTotal << " spheres, yours " << libraryTotal + extra
                                                         << " (" << extra << " extra)");
     INFO(std::setprecision(17) << "your lists hold " << extra << " extra spheres on top of the oracle's " << libraryTotal

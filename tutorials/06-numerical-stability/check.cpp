@@ -3,9 +3,17 @@
 // quadratics built from known roots, and roots found by bisection in long double
 // and polished in quad precision (its answers are data: oracles.h, oracle_data.txt), on ordinary cases (where the textbook
 // formula is fine too) and on stiff ones (where it is not).
+//
+// Each run shows your roots every recorded ray and sphere in a frame of its own
+// (tutorial_frame.h): rotated, moved and scaled by a power of two (on the exact-integer
+// cases, turned by a random signed permutation of the axes and moved by whole units, so that
+// they stay exact), drawn from a seed (std::random_device, or $TUTORIAL_06_SEED to repeat a
+// run; failures print it). The ray's direction keeps its length, so an expected root is the
+// recorded one times the scale.
 #include <iomanip>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +26,7 @@
 #include "scene/nff_reader.h"
 #include "search/query.h"
 #include "oracles.h"
+#include "tutorial_frame.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -34,13 +43,49 @@ rc::Ray rayTowards(tutorial::Random& rnd, const rc::Sphere& s, double distance, 
     return {o, glm::normalize(target - o)};
 }
 
+// The run's seed, said with every failure so that the run can be repeated
+std::uint64_t runSeed() {
+    static const std::uint64_t seed = tutorial::runSeed("TUTORIAL_06_SEED");
+    return seed;
+}
+std::string seedNote() {
+    return " [this run's frames: TUTORIAL_06_SEED=" + std::to_string(runSeed()) + " repeats them]";
+}
+
+// Your roots in the frame `f`, brought back to the case's units (the scale is a power of
+// two: dividing by it rounds nothing)
+rc::SphereRoots yours(const tutorial::Frame& f, const rc::Ray& ray, const rc::Sphere& s) {
+    rc::SphereRoots r = rc::sphereRootsStable(f.ray(ray), f.sphere(s));
+    r.t0 /= f.scale, r.t1 /= f.scale;
+    return r;
+}
+
+// A frame that rounds nothing on integer coordinates below 2^40: the axes permuted and
+// flipped, a shift of whole units up to 1000, a scale 2^k, |k| <= 4
+tutorial::Frame exactFrame(tutorial::Random& rnd) {
+    tutorial::Frame f;
+    rc::Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int k = 2; k > 0; --k) std::swap(axes[k], axes[rnd.index(k + 1)]);
+    for (rc::Vec3& a : axes)
+        if (rnd.chance(0.5)) a = -a;
+    f.x = axes[0], f.y = axes[1], f.z = axes[2];
+    f.shift = {std::round(rnd.uniform(-1000, 1000)), std::round(rnd.uniform(-1000, 1000)),
+               std::round(rnd.uniform(-1000, 1000))};
+    f.scale = std::ldexp(1.0, rnd.index(9) - 4);
+    return f;
+}
+
 // The oracle's roots, rounded to doubles
 rc::SphereRoots oracle(const rc::Ray& ray, const rc::Sphere& s) { return tutorial::oracleSphereRoots(ray, s); }
 
-// Your roots must match the oracle's to 1e-12 of the problem's size
-void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
+// Your roots must match the oracle's to 1e-12 of the problem's size. The frame shifts by at
+// most the problem's size (`reach`), so its rotation rounds the coordinates your roots see
+// by a few ulps of it, some 1e-15 of the size: the tolerance holds them 100 times over
+void compare(tutorial::Random& frames, const rc::Ray& ray, const rc::Sphere& s, double aim) {
     const rc::SphereRoots want = oracle(ray, s);
-    const rc::SphereRoots got = rc::sphereRootsStable(ray, s);
+    const double reach = std::max({glm::length(ray.o), glm::length(s.c), s.r});
+    const rc::SphereRoots got = yours(tutorial::randomFrame(frames, reach, 4), ray, s);
+    INFO("the ray and sphere are shown to your code rotated, moved and scaled" << seedNote());
     INFO(std::setprecision(17) << "sphere radius " << s.r << " at distance " << glm::length(s.c - ray.o) << ", aimed " << aim
                           << " radii off centre; library: hit " << want.hit << " t0 " << want.t0 << " t1 "
                           << want.t1 << "; yours: hit " << got.hit << " t0 " << got.t0 << " t1 " << got.t1);
@@ -57,27 +102,27 @@ void compare(const rc::Ray& ray, const rc::Sphere& s, double aim) {
 }  // namespace
 
 TEST_CASE("stableRoots agrees with the oracle on ordinary spheres", "[tutorial06]") {
-    tutorial::Random rnd(7);
+    tutorial::Random rnd(7), frames(rc::mixKey(runSeed(), 1));
     for (int i = 0; i < 2000; ++i) {
         const rc::Sphere s{rnd.inBox(10.0), rnd.uniform(0.5, 3.0)};
         const double aim = rnd.uniform(0.0, 1.5);
-        compare(rayTowards(rnd, s, rnd.uniform(4.0, 30.0), aim), s, aim);
+        compare(frames, rayTowards(rnd, s, rnd.uniform(4.0, 30.0), aim), s, aim);
     }
 }
 
 TEST_CASE("stableRoots agrees with the oracle on small spheres far away", "[tutorial06]") {
     // The textbook formula forms b*b - c from two numbers near distance^2 and loses
     // every digit of r^2 once r^2 is below distance^2 times the double's epsilon
-    tutorial::Random rnd(2020);
+    tutorial::Random rnd(2020), frames(rc::mixKey(runSeed(), 2));
     for (int i = 0; i < 2000; ++i) {
         const rc::Sphere s{rnd.inBox(1.0), rnd.logUniform(-4.0, -1.0)};
         const double aim = rnd.uniform(0.0, 0.85);  // a clear hit
-        compare(rayTowards(rnd, s, rnd.logUniform(3.0, 7.0), aim), s, aim);
+        compare(frames, rayTowards(rnd, s, rnd.logUniform(3.0, 7.0), aim), s, aim);
     }
 }
 
 TEST_CASE("stableRoots agrees with the oracle from inside and on the surface", "[tutorial06]") {
-    tutorial::Random rnd(1986);
+    tutorial::Random rnd(1986), frames(rc::mixKey(runSeed(), 3));
     for (int i = 0; i < 2000; ++i) {
         const rc::Sphere s{rnd.inBox(10.0), rnd.logUniform(-2.0, 3.0)};
         // The origin inside the sphere, or on its surface (a ray leaving a hit point, not
@@ -86,7 +131,7 @@ TEST_CASE("stableRoots agrees with the oracle from inside and on the surface", "
         const rc::Vec3 n = rnd.direction();
         rc::Vec3 d = rnd.direction();
         while (at == 1.0 && std::abs(glm::dot(d, n)) < 0.1) d = rnd.direction();
-        compare(rc::Ray{s.c + at * s.r * n, d}, s, 0.0);
+        compare(frames, rc::Ray{s.c + at * s.r * n, d}, s, 0.0);
     }
 }
 
@@ -94,7 +139,9 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
     // Integer coordinates, so the offset f and c = |f|^2 - r^2 are exact: an origin a
     // little outside a large sphere, where the near root is tiny and -b - sqrt(disc)
     // subtracts two nearly equal numbers. Only t0 = c / q (Vieta) keeps its digits.
-    tutorial::Random rnd(1986);
+    INFO("the ray and sphere are shown to your code with their axes permuted and flipped, moved by whole units and "
+         "scaled by a power of two" << seedNote());
+    tutorial::Random rnd(1986), frames(rc::mixKey(runSeed(), 4));
     for (int i = 0; i < 2000; ++i) {
         const double r = std::round(rnd.logUniform(3.0, 6.0));
         const rc::Vec3 c{std::round(rnd.uniform(-100, 100)), std::round(rnd.uniform(-100, 100)),
@@ -109,7 +156,7 @@ TEST_CASE("stableRoots keeps the near root's relative accuracy just outside a la
         // Aim at a point well inside the sphere: a clear hit, the near root tiny
         const rc::Ray ray{o, glm::normalize(c + 0.5 * r * rnd.direction() - o)};
         const rc::SphereRoots want = oracle(ray, s);
-        const rc::SphereRoots got = rc::sphereRootsStable(ray, s);
+        const rc::SphereRoots got = yours(exactFrame(frames), ray, s);
         INFO(std::setprecision(17) << "sphere radius " << r << ", origin " << std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - r
                               << " outside it; oracle t0 " << want.t0 << ", yours " << got.t0 << " (relative error "
                               << std::abs(got.t0 - want.t0) / want.t0 << ")");

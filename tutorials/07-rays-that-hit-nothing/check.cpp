@@ -42,6 +42,7 @@
 #include "oracles.h"
 #include "scene/builtin_scenes.h"
 #include "search/query.h"
+#include "tutorial_frame.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -372,7 +373,13 @@ struct GradeReport : Catch::TestEventListenerBase {
 CATCH_REGISTER_LISTENER(GradeReport)
 
 TEST_CASE("basic: emptyConeAngle is the widest empty cone, and no ray inside it hits", "[tutorial07]") {
-    tutorial::Random rnd(1986);
+    // Each case shown in a frame of the run's own: the spheres in a shuffled order, the
+    // apex, axis and spheres rotated, moved (up to 10) and scaled by a power of two, which
+    // keeps every angle. The rotation rounds the coordinates by some 1e-14, which moves an
+    // angle by that over the apex's distance to a sphere: far inside the tolerance
+    INFO("each case is shown to your code renumbered, rotated, moved and scaled; the numbers below are the case's own"
+         << seedNote());
+    tutorial::Random rnd(1986), frames(rc::mixKey(runSeed(), 1986));
     int open = 0, closed = 0;
     for (int i = 0; i < 4000; ++i) {
         std::vector<rc::Sphere> spheres(i % 50 == 0 ? 0 : 1 + rnd.index(20));
@@ -384,7 +391,12 @@ TEST_CASE("basic: emptyConeAngle is the widest empty cone, and no ray inside it 
                                   ? glm::normalize(aimAt.c + 0.5 * aimAt.r * rnd.inBox(1.0) - apex)
                                   : rnd.direction();
         const double want = coneAngle(apex, axis, spheres);
-        const double got = tutorial::emptyConeAngle(apex, axis, spheres);
+        const tutorial::Frame frame = tutorial::randomFrame(frames, 10.0, 4);
+        std::vector<rc::Sphere> moved;
+        for (const rc::Sphere& s : spheres) moved.push_back(frame.sphere(s));
+        for (int k = int(moved.size()) - 1; k > 0; --k) std::swap(moved[k], moved[frames.index(k + 1)]);
+        const rc::Vec3 shownApex = frame.point(apex), shownAxis = frame.turn(axis);
+        const double got = tutorial::emptyConeAngle(shownApex, shownAxis, moved);
         INFO(std::setprecision(17) << "case " << i << ": " << spheres.size() << " spheres, apex (" << apex.x << ", " << apex.y << ", "
                      << apex.z << "); expected " << want << ", yours " << got);
         if (std::isinf(want)) {
@@ -397,13 +409,15 @@ TEST_CASE("basic: emptyConeAngle is the widest empty cone, and no ray inside it 
         } else {
             REQUIRE(std::abs(got - want) <= 1e-9 * std::max(1.0, want));
             // Rays on the cone's edge, just inside: none may hit
-            const rc::Vec3 side = glm::normalize(glm::cross(axis, rnd.direction()));
+            // (in the frame your code was shown)
+            const rc::Vec3 side = glm::normalize(glm::cross(shownAxis, rnd.direction()));
             for (int k = 0; k < 8; ++k) {
                 const double a = std::min(got, M_PI) * (1.0 - 1e-7), turn = 2.0 * M_PI * k / 8.0;
-                const rc::Vec3 ortho = std::cos(turn) * side + std::sin(turn) * glm::cross(axis, side);
-                const rc::Ray ray{apex, glm::normalize(std::cos(a) * axis + std::sin(a) * ortho)};
-                INFO(std::setprecision(17) << "a ray " << a << " radians from the axis meets sphere " << anyMet(ray, spheres));
-                REQUIRE(anyMet(ray, spheres) < 0);
+                const rc::Vec3 ortho = std::cos(turn) * side + std::sin(turn) * glm::cross(shownAxis, side);
+                const rc::Ray ray{shownApex, glm::normalize(std::cos(a) * shownAxis + std::sin(a) * ortho)};
+                INFO(std::setprecision(17) << "a ray " << a << " radians from the axis meets sphere " << anyMet(ray, moved)
+                                           << " (numbered as your code was shown them)");
+                REQUIRE(anyMet(ray, moved) < 0);
             }
             ++open;
         }
