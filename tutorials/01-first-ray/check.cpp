@@ -24,6 +24,7 @@
 #include "search/complete_search.h"
 #include "search/standard_algorithm.h"
 #include "oracles.h"
+#include "tutorial_frame.h"
 #include "tutorial_picture.h"
 #include "tutorial_random.h"
 
@@ -83,6 +84,30 @@ rc::Answer oracle(const rc::Scene& s, const rc::Query& q, bool* ambiguous = null
 // Your loop, and the tests it counted
 rc::Answer yours(const rc::Scene& s, const rc::Query& q, rc::Counters& n) { return rc::standardAlgorithm(s, q, n); }
 
+// The run's seed, said with every failure so that the run can be repeated
+std::uint64_t runSeed() {
+    static const std::uint64_t seed = tutorial::runSeed("TUTORIAL_01_SEED");
+    return seed;
+}
+
+// Scene `s` and query `q` as your loop sees them in frame `f`: every sphere moved and scaled
+// alike, the objects in the same order (a tie still goes to the lower id), tmax scaled. A
+// distance becomes f.scale times the case's (a power of two: exact). The rotation rounds the
+// coordinates by a few ulps of 30: some 1e-14 in t, far inside agree()'s 1e-9, and far from
+// the oracle's 1e-9 margin around 0 and tmax, where a case is left out as ambiguous
+rc::Answer yours(const tutorial::Frame& f, const rc::Scene& s, const rc::Query& q, rc::Counters& n) {
+    rc::Scene shown;
+    shown.materials = s.materials;
+    for (int id = 0; id < s.size(); ++id) shown.addSphere(f.sphere(s.spheres[s.objects[id].index]), 0);
+    shown.finalize();
+    rc::Query seen = q;
+    seen.ray = f.ray(q.ray);
+    if (q.tmax < rc::kNoHit) seen.tmax = q.tmax * f.scale;
+    rc::Answer a = yours(shown, seen, n);
+    if (a.t < rc::kNoHit) a.t /= f.scale;
+    return a;
+}
+
 // Do two answers agree, up to the oracle's rounding of t?
 bool agree(const rc::Answer& got, const rc::Answer& want) {
     return got.object == want.object &&
@@ -93,6 +118,8 @@ bool agree(const rc::Answer& got, const rc::Answer& want) {
 
 TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutorial01]") {
     tutorial::Random rnd(1986);
+    // Each case is shown to your loop in a frame of this run's own (TUTORIAL_01_SEED repeats it)
+    tutorial::Random frames(rc::mixKey(runSeed(), 1));
     int hits = 0, cases = 0, skipped = 0;
     for (int scene = 0; scene < 40; ++scene) {
         const rc::Scene s = randomScene(rnd, 5 + rnd.index(60), scene % 4 == 0);
@@ -102,7 +129,7 @@ TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutoria
             bool ambiguous = false;
             long wantTests = 0;
             const rc::Answer want = oracle(s, q, &ambiguous, &wantTests);
-            const rc::Answer got = yours(s, q, n);
+            const rc::Answer got = yours(tutorial::randomFrame(frames, 10.0, 4), s, q, n);
             if (ambiguous) {
                 ++skipped;
                 continue;
@@ -112,7 +139,8 @@ TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutoria
                           << ") from object " << q.origin.object << (q.origin.inside ? " (inside it)" : " (outside it)")
                           << ", tmax " << q.tmax << ": the oracle finds object " << want.object << " at t = "
                           << want.t << ", yours object " << got.object << " at t = " << got.t << " after "
-                          << n.intersectionTests << " counted test(s), the oracle counts " << wantTests);
+                          << n.intersectionTests << " counted test(s), the oracle counts " << wantTests
+                          << " [this run's frames: TUTORIAL_01_SEED=" << runSeed() << " repeats them]");
             REQUIRE(got.object == want.object);
             REQUIRE(agree(got, want));
             // One counted test per object, the surface the ray leaves excepted

@@ -8,7 +8,7 @@
 file(REMOVE ${DIR}/${PICTURE})
 # (TUTORIAL_NN_SEED: the checks show their cases in a presentation drawn from a seed, and
 # 07's picture records which rays its cache answered: a fixed one draws the same)
-execute_process(COMMAND ${CMAKE_COMMAND} -E env TUTORIAL_PICTURE_DIR=${DIR} TUTORIAL_02_SEED=1 TUTORIAL_03_SEED=1
+execute_process(COMMAND ${CMAKE_COMMAND} -E env TUTORIAL_PICTURE_DIR=${DIR} TUTORIAL_01_SEED=1 TUTORIAL_02_SEED=1 TUTORIAL_03_SEED=1
                         TUTORIAL_05_SEED=1 TUTORIAL_06_SEED=1 TUTORIAL_07_SEED=1 ${PROGRAM}
                 OUTPUT_QUIET ERROR_QUIET RESULT_VARIABLE result)
 if(NOT EXISTS ${DIR}/${PICTURE})
