@@ -10,13 +10,32 @@ full precision). A check that does not run (not built, crashed) scores nothing. 
 instructor's build `--program solution`, `stub` or `rejected_1` grades those programs
 instead of the student's exercise; `grade.py --selftest` does so and asserts the scores
 (the stubs all zero, the solutions full marks, a wrong answer partial).
+
+The test cases and their points are those of the check's source in this tree
+(tutorials/NN-*/check.cpp, the grader's copy), not whatever the report lists: a report that
+names other cases, or more, earns nothing for them. The student's code still runs inside the
+check's process, so code that takes the process over (writes the report itself, exits early)
+can forge a pass; look at submissions that reach for files, processes or exit().
 """
+import glob
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
+
+
+SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tutorials')
+
+
+def check_cases(nn):
+    """The names of the test cases tutorial `nn`'s check defines, from its source."""
+    for path in glob.glob(os.path.join(SOURCE, f'{nn}-*', 'check.cpp')):
+        with open(path) as f:
+            return [re.sub(r'\\(.)', r'\1', m) for m in re.findall(r'TEST_CASE\(\s*"((?:[^"\\]|\\.)*)"', f.read())]
+    return []
 
 
 def grade_one(build, nn, program):
@@ -34,12 +53,19 @@ def grade_one(build, nn, program):
             return [{'name': f'tutorial {nn}', 'score': 0, 'max_score': 1,
                      'output': f'the check did not run to its end (exit {run.returncode}):\n'
                                + (run.stdout + run.stderr)[-4000:]}]
-        tests = []
+        reported = {}
         for case in cases:
             failures = list(case.iter('failure')) + list(case.iter('error'))
             output = '\n\n'.join((f.get('message', '') + '\n' + (f.text or '')).strip() for f in failures)
-            tests.append({'name': f'tutorial {nn}: {case.get("name")}', 'score': 0 if failures else 1,
-                          'max_score': 1, 'output': output or 'passed'})
+            # A name reported twice counts as failed if either says so
+            if reported.get(case.get('name'), (1, ''))[0]:
+                reported[case.get('name')] = (0 if failures else 1, output or 'passed')
+        # One point for each of the check's own test cases, by its source: a case the report
+        # does not name earns nothing, a name the check does not define is not counted
+        tests = []
+        for name in check_cases(nn) or list(reported):
+            score, output = reported.get(name, (0, "not in the check's report: it did not run"))
+            tests.append({'name': f'tutorial {nn}: {name}', 'score': score, 'max_score': 1, 'output': output})
         if 'still the stub as shipped' in run.stdout:  # the check's main says so (rc::notYet)
             for t in tests:
                 t['score'] = 0
