@@ -43,7 +43,9 @@ function workerStart(w, bytes) {
 function workerPicture(w, r, buffers, top, hashed) {
   const view = w.view;
   const layer = workerBitmap(w, r, view.heatmap, top, view.misses, view.frontier);
-  const image = hashed && r.done() ? workerImageBytes(r) : null;
+  // Once a render: the frames after its end (a click, a toggle) need no second hash
+  const image = hashed && r.done() && w.hashedRender !== r ? workerImageBytes(r) : null;
+  if (image) w.hashedRender = r;
   buffers.push(layer);
   if (image) buffers.push(image.buffer);
   const width = r.width(), height = r.height();
