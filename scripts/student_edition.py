@@ -34,7 +34,9 @@ Outside the blocks, comments and blank lines only. `splice` writes the program t
 instructor's build compiles: HOLE with each region (solution and stub) replaced by its answer. The edition leaves out tutorials/instructor/ (the reference answers, wrong answers and
 the checks' oracles: the checks read their answers as data, tutorials/NN-*/oracle_data.txt),
 tests/instructor/ (tests that compute a tutorial's answer apart from the library) and replaces
-each file under scripts/student_edition/replace/ (pages that quote solutions).
+each file under scripts/student_edition/replace/ (pages written anew for it). In every other page
+of docs/pages, a \\snippet that quotes lines of an open tutorial's solution region becomes a
+sentence saying the instructor's edition quotes it there.
 """
 import html
 import os
@@ -150,10 +152,51 @@ def tracked(root):
     return [f for f in files.decode().split('\0') if f]
 
 
+SNIPPET = re.compile(r'^\s*\\snippet\s+(\S+)\s+(\S+)\s*$')
+TAG = re.compile(r'^\s*//\s*\[([\w-]+)\]\s*$')
+EXAMPLE_PATH = ('src/', 'tutorials/', 'tests/toy/')  # docs/Doxyfile.in's, where \snippet finds its files
+
+
+def region_snippets(root, open_tutorials):
+    """{(file as a \\snippet names it, tag): tutorial} of each snippet whose lines overlap a
+    solution region of an open tutorial: what a page may not quote in the edition."""
+    out = {}
+    for f, text in hole_files(root).items():
+        lines, found = regions(text)
+        spans = [(start, end, nn) for nn, _, _, start, end in found if nn in open_tutorials]
+        opened = {}
+        for k, line in enumerate(lines):
+            m = TAG.match(line)
+            if not m:
+                continue
+            tag = m.group(1)
+            if tag not in opened:
+                opened[tag] = k
+                continue
+            first = opened.pop(tag)
+            for start, end, nn in spans:
+                if first < end and start <= k:
+                    name = next((f[len(d):] for d in EXAMPLE_PATH if f.startswith(d)), f)
+                    out[(name, tag)] = nn
+    return out
+
+
+def unquoted(text, hidden):
+    """Page text with each \\snippet of `hidden` (region_snippets) replaced by a sentence."""
+    def line(l):
+        m = SNIPPET.match(l)
+        if not m or (m.group(1), m.group(2)) not in hidden:
+            return l
+        return (f'(This code is part of tutorial {hidden[(m.group(1), m.group(2))]}\'s answer: the student '
+                'edition leaves it out, the instructor\'s edition quotes it here.)')
+    return '\n'.join(line(l) for l in text.split('\n'))
+
+
 def export(root, out, open_tutorials):
     if os.path.exists(out):
         raise SystemExit(f'{out} exists: the edition is written to a new directory')
     replaced = {f[len(REPLACE):] for f in tracked(root) if f.startswith(REPLACE)}
+    hidden = region_snippets(root, open_tutorials)
     for f in tracked(root):
         if f.startswith(LEFT_OUT) or not os.path.isfile(os.path.join(root, f)):
             continue
@@ -167,6 +210,8 @@ def export(root, out, open_tutorials):
             continue
         if BEGIN.search(text) or '// BEGIN SOLUTION' in text:
             text = stubbed(text, open_tutorials)
+        if f.startswith('docs/pages/') and f.endswith('.md'):
+            text = unquoted(text, hidden)
         with open(dst, 'w', encoding='utf-8') as o:
             o.write(text)
         shutil.copymode(src, dst)
@@ -261,15 +306,21 @@ def file_leaks(path, needles, normalise):
 
 def dropped_pages(root):
     """The docs site's pages the edition does not have as the instructor's site shows them:
-    each page under scripts/student_edition/replace/docs/pages/ is replaced, and its HTML file
-    is named after the page's id (the first `{#id}` of the instructor's page)."""
+    each page under scripts/student_edition/replace/docs/pages/ (replaced) and each page that
+    quotes a solution region (its snippets unquoted); its HTML file is named after the page's
+    id (the first `{#id}` of the instructor's page)."""
     out = set()
+    hidden = region_snippets(root, ALL)
     for f in tracked(root):
+        page = None
         if f.startswith(REPLACE + 'docs/pages/') and f.endswith('.md'):
-            page = os.path.join(root, f[len(REPLACE):])
-            m = re.search(r'\{#(\w+)\}', open(page, encoding='utf-8').read())
-            if m:
-                out.add(m.group(1) + '.html')
+            page = open(os.path.join(root, f[len(REPLACE):]), encoding='utf-8').read()
+        elif f.startswith('docs/pages/') and f.endswith('.md'):
+            text = open(os.path.join(root, f), encoding='utf-8').read()
+            page = text if unquoted(text, hidden) != text else None
+        m = re.search(r'\{#(\w+)\}', page) if page else None
+        if m:
+            out.add(m.group(1) + '.html')
     return out
 
 
