@@ -95,13 +95,8 @@ public:
     // ulps, far below any margin an exact cache needs), but nothing it is shown says where the
     // eye or the sphere is: a cache cannot keep the spheres its emptyConeAngle() sees
     double emptyConeElsewhere(const rc::Vec3& axis, const rc::Vec3& v, double r) const {
-        const rc::Vec3 x = frames_.direction();
-        rc::Vec3 y;
-        do y = glm::cross(x, frames_.direction());
-        while (glm::length(y) < 0.1);
-        y = glm::normalize(y);
-        const rc::Vec3 z = glm::cross(x, y);
-        auto turn = [&](const rc::Vec3& w) { return w.x * x + w.y * y + w.z * z; };
+        const tutorial::Frame rotation = tutorial::randomRotation(frames_);
+        auto turn = [&](const rc::Vec3& w) { return rotation.turn(w); };
         const double scale = frames_.logUniform(-2.0, 2.0);
         // Within the scaled distance of the origin, so the translation rounds no worse than the scaling
         const rc::Vec3 apex = frames_.inBox(scale * glm::length(v));
@@ -125,11 +120,7 @@ private:
 
 // The run's seed: $TUTORIAL_07_SEED when set (to repeat a run), else std::random_device
 std::uint64_t runSeed() {
-    static const std::uint64_t seed = [] {
-        if (const char* given = std::getenv("TUTORIAL_07_SEED"); given && *given) return std::uint64_t(std::strtoull(given, nullptr, 10));
-        std::random_device device;
-        return (std::uint64_t(device()) << 32) ^ std::uint64_t(device());
-    }();
+    static const std::uint64_t seed = tutorial::runSeed("TUTORIAL_07_SEED");
     return seed;
 }
 
@@ -145,13 +136,13 @@ std::string seedNote() {
 // starting at a random row)
 struct Presentation {
     std::vector<int> id;
-    rc::Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};  // the rotation's columns
+    tutorial::Frame rotation;  // only its rotation: the scale and the eye are below
     double scale = 1.0;
     rc::Vec3 eye{0.0};
     bool flipX = false, flipY = false, transpose = false;
     int firstRow = 0;
 
-    rc::Vec3 turn(const rc::Vec3& v) const { return v.x * x + v.y * y + v.z * z; }
+    rc::Vec3 turn(const rc::Vec3& v) const { return rotation.turn(v); }
     int shown(int object) const { return object < 0 ? -1 : id[object]; }
     int pixel(int k, int width, int height) const {
         int a = k % width, b = (k / width + firstRow) % height;
@@ -168,11 +159,7 @@ Presentation presentation(std::uint64_t seed, int spheres, int width, int height
     p.id.resize(spheres);
     for (int j = 0; j < spheres; ++j) p.id[j] = j;
     for (int j = spheres - 1; j > 0; --j) std::swap(p.id[j], p.id[rnd.index(j + 1)]);
-    p.x = rnd.direction();
-    do p.y = glm::cross(p.x, rnd.direction());
-    while (glm::length(p.y) < 0.1);
-    p.y = glm::normalize(p.y);
-    p.z = glm::cross(p.x, p.y);
+    p.rotation = tutorial::randomRotation(rnd);
     p.scale = rnd.logUniform(-1.0, 1.0);
     p.eye = rnd.inBox(10.0);
     p.flipX = rnd.chance(0.5);

@@ -45,15 +45,21 @@ struct Frame {
     }
 };
 
-/// A random frame: a uniform rotation, a shift in [-`reach`, `reach`]^3 and a scale 2^k, k
-/// in [-`octaves`, `octaves`].
-inline Frame randomFrame(Random& rnd, double reach, int octaves) {
+/// A uniform random rotation: a frame with no shift and scale 1.
+inline Frame randomRotation(Random& rnd) {
     Frame f;
     f.x = rnd.direction();
     do f.y = glm::cross(f.x, rnd.direction());
     while (glm::length(f.y) < 0.1);
     f.y = glm::normalize(f.y);
     f.z = glm::cross(f.x, f.y);
+    return f;
+}
+
+/// A random frame: a uniform rotation, a shift in [-`reach`, `reach`]^3 and a scale 2^k, k
+/// in [-`octaves`, `octaves`].
+inline Frame randomFrame(Random& rnd, double reach, int octaves) {
+    Frame f = randomRotation(rnd);
     f.shift = rnd.inBox(reach);
     f.scale = std::ldexp(1.0, rnd.index(2 * octaves + 1) - octaves);
     return f;
