@@ -152,7 +152,9 @@ function onMessage(m) {
     if (m.opened && pendingRun) { worker.postMessage({ type: pendingRun }); pendingRun = null; }
     if (m.runMs !== undefined && m.runMs !== null)
       $('timing').textContent = 'ran to the end in ' + m.runMs.toFixed(1) + ' ms';
+    // The image's bytes are read for their hash only: not kept with the frame (`last`)
     if (m.done && m.image && m.generation === generation) writeHash(m.image);
+    m.image = null;
   }
 }
 
