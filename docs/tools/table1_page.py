@@ -186,15 +186,25 @@ for scene, rs in scenes.items():
     cost.append("")
     cost.append('<div><table class="markdownTable">')
     cost.append("<tr class=\"markdownTableHead\"><th>configuration</th><th>time</th>"
-                "<th>predicted by the counts</th><th>cache's own work per miss</th></tr>")
+                "<th>predicted by the counts</th><th>time / predicted</th><th>cache's own work per miss</th></tr>")
     for r in rs:
         if r["cache"] == "none":
             continue
         cost.append(f"<tr class=\"markdownTableBody\"><td>{config(r)}</td><td align=\"right\">"
                     f"{float(r['time_ratio']):.3f}</td><td align=\"right\">{float(r['predicted_time_ratio']):.3f}</td>"
+                    f"<td align=\"right\">{float(r['time_ratio']) / float(r['predicted_time_ratio']):.2f}</td>"
                     f"<td align=\"right\">{float(r['own_ns_per_miss']):.0f} ns</td></tr>")
     cost.append("</table></div>")
     cost.append("")
+    # Breadth-first against scanline with the same cache, in seconds
+    pairs = [(c, cell(rs, c, "bfs", "seconds"), cell(rs, c, "scanline", "seconds"))
+             for c in OrderedDict((r["cache"], None) for r in rs) if c != "none"]
+    pairs = [(c, b / s) for c, b, s in pairs if b and s]
+    if pairs:
+        cost.append(f"<div style=\"margin-top: 0.5em\">{scene}, breadth-first against scanline with the same "
+                    "cache, in seconds: " + ", ".join(f"<tt>{c}</tt> {x:.2f}" for c, x in pairs) +
+                    " (below 1: breadth-first is faster).</div>")
+        cost.append("")
 md.extend(cost)
 md.append("\\image html table1_chart.png \"Time and intersection tests relative to no cache, "
           "per configuration and scene; black ticks: the paper's time\"")
