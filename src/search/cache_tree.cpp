@@ -50,9 +50,12 @@ int CacheTree::child(int node, RayKind kind, int light, int sample) {
 void CacheTree::flushBelow(int node) {
     // [flush-below]
     // A miss at a parent: the rays of the paths beneath now start somewhere else
+    // (arithmetic, not a branch: whether an entry below is loaded is a coin toss; Loaded
+    // is Flushed + 1)
+    static_assert(int(CacheEntry::State::Loaded) == int(CacheEntry::State::Flushed) + 1);
     for (int k : nodes_[node].entriesBelow) {
-        CacheEntry& e = entries_[std::size_t(k)];
-        if (e.state == CacheEntry::State::Loaded) e.state = CacheEntry::State::Flushed;
+        CacheEntry::State& s = entries_[std::size_t(k)].state;
+        s = CacheEntry::State(std::uint8_t(s) - std::uint8_t(s == CacheEntry::State::Loaded));
     }
     // [flush-below]
 }
