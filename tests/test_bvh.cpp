@@ -11,6 +11,8 @@
 #include "render/render_session.h"
 #include "scene/builtin_scenes.h"
 #include "search/bounding_volume_hierarchy.h"
+#include "search/clearance_scan.h"
+#include "search/segment_clearance.h"
 #include "search/linear_search.h"
 #include "uniform.h"
 
@@ -170,4 +172,49 @@ TEST_CASE("in front of a hierarchy blocker+ stays cheap, the paper's blocker tes
     REQUIRE(cached < 4.0 * searched);
     // The paper's cache never steps aside: it tests the ground polygon's long lists whole
     REQUIRE(paper > 5.0 * cached);
+}
+
+TEST_CASE("the clearance scan measures what the hierarchy measures, bit for bit", "[bvh][cylinder][exact]") {
+    // In front of the linear scan, cylinders of safety are measured over every sphere four
+    // at a time (ClearanceScan): the radius must be the hierarchy's exactly, with any count
+    // of objects (a multiple of four or not), objects left out, a cap, and on every processor
+    int cut = 0, capped = 0;
+    for (Layout layout : {Layout::Overlapping, Layout::Tangent, Layout::Nested, Layout::Polygons}) {
+        for (int count : {1, 3, 4, 5, 37, 150}) {
+            const Scene scene = testing::randomScene(layout, 11 + std::uint64_t(count), count);
+            const BoundingVolumeHierarchy tree(scene);
+            const ClearanceScan scan(scene);
+            REQUIRE(scan.size() == scene.objects.size());
+            const int objects = scene.size();
+            Random rng(23);
+            const Uniform u{-6.0, 6.0};
+            for (int i = 0; i < 200; ++i) {
+                const Vec3 a{u(rng), u(rng), u(rng)};
+                // A point now and then: a segment of length 0
+                const Vec3 b = i % 17 == 0 ? a : Vec3{u(rng), u(rng), u(rng)};
+                const int skip = i % 3 == 0 ? -1 : i % objects, skipToo = i % 5 == 0 ? -1 : (7 * i) % objects;
+                const double cap = i % 4 == 0 ? 0.25 : kNoHit;
+                int treeNearest = -2, scanNearest = -2, scalarNearest = -2;
+                const double radius = tree.clearance(a, b, skip, skipToo, cap, -kNoHit, &treeNearest);
+                REQUIRE(scan.clearance(a, b, skip, skipToo, cap, &scanNearest) == radius);
+                REQUIRE(scan.clearanceScalar(a, b, skip, skipToo, cap, &scalarNearest) == radius);
+                // The same object, or one at the same distance (a tie); -1 only for the cap
+                REQUIRE(scanNearest == scalarNearest);
+                if (treeNearest < 0) {
+                    REQUIRE(scanNearest == -1);
+                    ++capped;
+                } else {
+                    REQUIRE(scanNearest >= 0);
+                    REQUIRE(scanNearest != skip);
+                    REQUIRE(scanNearest != skipToo);
+                    SegmentClearance measure(a, b, -1, -1, kNoHit, -kNoHit);
+                    REQUIRE(measure.distance(scene.objects[std::size_t(scanNearest)].bound) == radius);
+                }
+                cut += radius < 0.0;
+            }
+        }
+    }
+    // Segments inside objects, clear of them, and capped
+    REQUIRE(cut > 100);
+    REQUIRE(capped > 100);
 }

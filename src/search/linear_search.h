@@ -9,6 +9,7 @@
 namespace rc {
 
 class BoundingVolumeHierarchy;
+class ClearanceScan;
 class SphereBatch;
 
 /// Tests every object in the scene: the paper's "standard ray-tracing algorithm".
@@ -18,6 +19,9 @@ class SphereBatch;
 /// go through a hierarchy of bounding spheres built once per scene, so a cache builds a
 /// list or a cylinder without measuring every object. (RayCache's choice: the paper does not
 /// say how lists are found. `Regions::Scan` measures every object instead.)
+/// Scenes of at most this many objects measure cylinders of safety by ClearanceScan.
+inline constexpr int kClearanceScanLimit = 256;
+
 class LinearSearch final : public CompleteSearch {
 public:
     /// How region queries (cull(), clearance()) are answered.
@@ -37,6 +41,8 @@ private:
     std::unique_ptr<const SphereBatch> all_;
     /// The bounding spheres of the objects, for region queries (none: scan them all)
     std::unique_ptr<const BoundingVolumeHierarchy> regions_;
+    /// Every bounding sphere, for the radius of a cylinder of safety (none: too many objects)
+    std::unique_ptr<const ClearanceScan> scan_;
 };
 
 }  // namespace rc

@@ -22,7 +22,9 @@
 #include "geometry/safety_cylinder.h"
 #include "scene/builtin_scenes.h"
 #include "search/accelerator.h"
+#include "search/bounding_volume_hierarchy.h"
 #include "search/cache_strategy.h"
+#include "search/clearance_scan.h"
 #include "search/direction_lists.h"
 #include "search/linear_search.h"
 #include "search/list_table.h"
@@ -104,6 +106,34 @@ TEST_CASE("complete search against a cached lookup", "[search]") {
             hits += blocker->lookup({centre, kNoHit, {}, RayKind::Primary, -1}, entry, LookupMode::CheapOnly, n).known;
         return hits;
     };
+}
+
+TEST_CASE("the radius of a cylinder of safety: the hierarchy against the scan", "[clearance]") {
+    // Segments from the eye and from objects to points across the scene, as the caches'
+    // rays that hit nothing leave them; the same radius either way
+    for (const char* spec : {"cube:5", "cube:8", "cube:10"}) {
+        const Scene scene = makeBuiltin(spec);
+        const BoundingVolumeHierarchy bvh(scene);
+        const ClearanceScan scan(scene);
+        Random rng(7);
+        const Uniform u{-1.0, 1.0};
+        std::vector<std::pair<Vec3, Vec3>> segments;
+        for (int i = 0; i < 256; ++i) {
+            const Vec3 from = i % 2 ? scene.camera.from : scene.objects[std::size_t(i) % scene.objects.size()].bound.c;
+            segments.emplace_back(from, scene.bound.c + scene.bound.r * Vec3(u(rng), u(rng), u(rng)));
+        }
+        for (const auto& [a, b] : segments) REQUIRE(bvh.clearance(a, b, -1, -1, kNoHit) == scan.clearance(a, b, -1, -1, kNoHit, nullptr));
+        BENCHMARK(std::string(spec) + ": through the hierarchy x256") {
+            double sum = 0;
+            for (const auto& [a, b] : segments) sum += bvh.clearance(a, b, -1, -1, kNoHit);
+            return sum;
+        };
+        BENCHMARK(std::string(spec) + ": every sphere, four at a time x256") {
+            double sum = 0;
+            for (const auto& [a, b] : segments) sum += scan.clearance(a, b, -1, -1, kNoHit, nullptr);
+            return sum;
+        };
+    }
 }
 
 // The hand-written containers against the standard library's: the trace recorder's
