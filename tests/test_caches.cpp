@@ -17,6 +17,7 @@
 #include "search/direction_lists.h"
 #include "search/linear_search.h"
 #include "search/packed_spheres.h"
+#include "search/reach_order.h"
 #include "uniform.h"
 
 using namespace rc;
@@ -683,4 +684,30 @@ TEST_CASE("packed spheres test a list as testObjectQuickly does, four at a time 
     // Both outcomes occur
     REQUIRE(hits > cases / 10);
     REQUIRE(hits < cases);
+}
+
+TEST_CASE("a site's order by reach is std::sort's, ties, signs and zeros included", "[cache][directions]") {
+    // The radix sort must order (reach, id) pairs exactly as std::sort does: by reach, then
+    // by id, with -0.0 equal to 0.0, negative reaches first, and many ties
+    Random rng(31);
+    const Uniform u{-3.0, 3.0};
+    ReachOrder order;
+    for (int n : {0, 1, 2, 7, 64, 513}) {
+        for (int round = 0; round < 20; ++round) {
+            std::vector<std::pair<double, int>> pairs;
+            order.clear();
+            for (int id = 0; id < n; ++id) {
+                double reach = u(rng);
+                if (round % 4 == 1) reach = std::round(reach);  // ties
+                if (round % 4 == 2) reach = id % 3 == 0 ? -0.0 : id % 3 == 1 ? 0.0 : reach * 1e-300;  // zeros, denormals
+                if (round % 4 == 3) reach = id % 2 ? 1e300 * reach : reach;  // a wide range of exponents
+                pairs.emplace_back(reach, id);
+                order.push(reach, std::uint32_t(id));
+            }
+            std::sort(pairs.begin(), pairs.end());
+            order.sort();
+            REQUIRE(order.entries().size() == pairs.size());
+            for (std::size_t k = 0; k < pairs.size(); ++k) REQUIRE(order.entries()[k].id == std::uint32_t(pairs[k].second));
+        }
+    }
 }

@@ -160,10 +160,10 @@ std::size_t DirectionLists::nearestFirst(int site) {
         at = std::uint32_t(ordered_);
         const Sphere from = sites_.siteSphere(site);
         sorting_.clear();
-        for (int id = 0; id < int(bounds_.size()); ++id) sorting_.emplace_back(reachFrom(from, id), id);
-        std::sort(sorting_.begin(), sorting_.end());
+        for (int id = 0; id < int(bounds_.size()); ++id) sorting_.push(reachFrom(from, id), std::uint32_t(id));
+        sorting_.sort();
         // Only the ids are kept: a cell's build recomputes the reach of the few it keeps
-        for (const auto& [reach, id] : sorting_) orders_[ordered_++] = std::uint32_t(id);
+        for (const ReachOrder::Entry& e : sorting_.entries()) orders_[ordered_++] = e.id;
         const std::uint32_t* first = orders_ + at;
         // [site-order]
         // Each object's aim: a sphere of radius g at distance L subtends a half-angle

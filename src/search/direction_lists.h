@@ -21,6 +21,7 @@
 
 #include "search/blocker_lists.h"
 #include "search/list_arena.h"
+#include "search/reach_order.h"
 
 namespace rc {
 
@@ -114,7 +115,7 @@ private:
     /// (pages are touched as they are used)
     std::uint32_t* orders_ = nullptr;
     std::size_t ordered_ = 0;  ///< entries of orders_ (and of each aim array) written
-    std::vector<std::pair<double, int>> sorting_;  ///< scratch: a site's (reach, id) pairs as they are sorted
+    ReachOrder sorting_;  ///< scratch: a site's (reach, id) pairs as they are sorted
     /// Beside each entry of orders_: the object's direction from the site (x, y, z) and the
     /// cosine and sine of the half-angle its grown sphere subtends, in single precision and
     /// in arrays of their own, so one loop tests many at once: a quick test that only ever
