@@ -110,13 +110,22 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
     const RayTask* const tasks = paths_[generation_[pathIndex_]].data();
     // BEGIN SOLUTION 04
     // [bfs-grow]
+    // What trying a pixel makes of its state: untouched, or deferred by an earlier region,
+    // this region queues it; any other state stays
+    static constexpr State kTried[] = {Absent, Queued, Queued, Queued, Done};
+    // Whether a neighbour is taken is a coin toss the processor would guess wrong half the
+    // time: each is written at the queue's end, which moves past it only if it was taken
+    queue_.room(4);
+    int* const queued = queue_.items.data();
+    std::size_t end = queue_.tail;
     auto visit = [&](int q) {
-        // Untouched, or deferred by an earlier region: this region tries it
-        if (state[q] != Unvisited && state[q] != Deferred) return;
-        state[q] = Queued;
-        queue_.push_back(q);
-        // Its ray is traced soon: start fetching it now
-        const char* task = reinterpret_cast<const char*>(tasks + slot[q]);
+        const State was = state[q];
+        const bool tries = was == Unvisited || was == Deferred;
+        state[q] = kTried[was];
+        queued[end] = q;
+        end += tries;
+        // Its ray is traced soon: start fetching it now (if not taken, the path's first: harmless)
+        const char* task = reinterpret_cast<const char*>(tasks + (slot[q] & -int(tries)));
         for (std::size_t line = 0; line < sizeof(RayTask); line += 64) __builtin_prefetch(task + line);
     };
     // The 4-neighbours inside the band
@@ -124,6 +133,7 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
     if (x + 1 < width_) visit(local + 1);
     if (y > 0) visit(local - width_);
     if (y + 1 < rows) visit(local + width_);
+    queue_.tail = end;
     // [bfs-grow]
     // END SOLUTION
     // BEGIN STUB

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// \brief Objects ordered by their reach without comparing them: a radix sort of doubles.
-#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace rc {
@@ -21,7 +21,10 @@ public:
     /// Appends a pair; ids must come in ascending order.
     void push(double reach, std::uint32_t id) {
         // -0.0 and 0.0 are equal reaches: one key for both (x + 0.0 is +0.0 for either)
-        const std::uint64_t bits = std::bit_cast<std::uint64_t>(reach + 0.0);
+        // (memcpy, not std::bit_cast: the web edition's library has none)
+        const double value = reach + 0.0;
+        std::uint64_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
         entries_.push_back({bits >> 63 ? ~bits : bits | (std::uint64_t(1) << 63), id});
     }
     void clear() { entries_.clear(); }
