@@ -101,7 +101,7 @@ FrontierView BreadthFirstOrder::frontier() const {
         return f;
     }
     const int base = bandRow_ * width_;
-    for (std::size_t i = queue_.head; i < queue_.tail; ++i) f.queued.push_back(base + queue_.items[i]);
+    for (std::size_t i = queue_.head; i < queue_.items.size(); ++i) f.queued.push_back(base + queue_.items[i]);
     for (int q = 0; q < int(state_.size()); ++q)
         if (state_[q] == Deferred) f.deferred.push_back(base + q);
     return f;

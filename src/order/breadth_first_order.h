@@ -84,26 +84,21 @@ private:
     /// are the band's pixels in order)
     std::vector<std::vector<int>> pixels_;
     /// First in, first out, in a vector that keeps its memory (a deque frees and takes a
-    /// block every hundred-odd pixels: allocations that grow with the rays). The pixels
-    /// queued are items[head, tail).
+    /// block every hundred-odd pixels: allocations that grow with the rays)
     struct PixelQueue {
         std::vector<int> items;
-        std::size_t head = 0, tail = 0;
-        bool empty() const { return head == tail; }
-        std::size_t size() const { return tail - head; }
+        std::size_t head = 0;
+        bool empty() const { return head == items.size(); }
+        std::size_t size() const { return items.size() - head; }
         int front() const { return items[head]; }
-        void push_back(int pixel) {
-            room(1);
-            items[tail++] = pixel;
-        }
-        /// Room for `k` more pixels past the tail, to write without a check.
-        void room(std::size_t k) {
-            if (items.size() < tail + k) items.resize(tail + k);
-        }
+        void push_back(int pixel) { items.push_back(pixel); }
         void pop_front() {
-            if (++head == tail) clear();
+            if (++head == items.size()) clear();
         }
-        void clear() { head = tail = 0; }
+        void clear() {
+            items.clear();
+            head = 0;
+        }
     };
     PixelQueue queue_;
     PixelQueue pending_;

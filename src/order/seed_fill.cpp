@@ -115,9 +115,11 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
     static constexpr State kTried[] = {Absent, Queued, Queued, Queued, Done};
     // Whether a neighbour is taken is a coin toss the processor would guess wrong half the
     // time: each is written at the queue's end, which moves past it only if it was taken
-    queue_.room(4);
+    // (room for four is made, and what was not taken is dropped again below)
+    const std::size_t before = queue_.items.size();
+    queue_.items.resize(before + 4);
     int* const queued = queue_.items.data();
-    std::size_t end = queue_.tail;
+    std::size_t end = before;
     auto visit = [&](int q) {
         const State was = state[q];
         const bool tries = was == Unvisited || was == Deferred;
@@ -133,7 +135,7 @@ void BreadthFirstOrder::enqueueNeighbours(int local) {
     if (x + 1 < width_) visit(local + 1);
     if (y > 0) visit(local - width_);
     if (y + 1 < rows) visit(local + width_);
-    queue_.tail = end;
+    queue_.items.resize(end);
     // [bfs-grow]
     // END SOLUTION
     // BEGIN STUB
