@@ -18,6 +18,7 @@
 #include "search/linear_search.h"
 #include "search/packed_spheres.h"
 #include "search/reach_order.h"
+#include "search/sphere_batch.h"
 #include "uniform.h"
 
 using namespace rc;
@@ -636,6 +637,19 @@ TEST_CASE("a cell's quick test gives the same bits eight at a time as one at a t
     REQUIRE(edges > 100);  // the edge cases were met
 }
 
+namespace {
+/// A random query against `scene`: from inside the box [-4, 4]^3, or (every fourth) from an
+/// object's centre as if leaving its surface; every third limited to a random tmax
+Query randomQuery(const Scene& scene, Random& rng, const Uniform& u, int k) {
+    Query q;
+    q.origin = {k % 4 == 0 ? int(rng.index(scene.size())) : -1, false};
+    q.ray = Ray{Vec3(4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)), glm::normalize(Vec3(u(rng), u(rng), u(rng)))};
+    if (q.origin.object >= 0) q.ray.o = scene.objects[q.origin.object].bound.c;
+    q.tmax = k % 3 == 0 ? 2.0 + 3.0 * std::abs(u(rng)) : kNoHit;
+    return q;
+}
+}  // namespace
+
 TEST_CASE("packed spheres test a list as testObjectQuickly does, four at a time or one", "[cache][packed]") {
     // Random lists (spheres, polygons, the ray's own object), nearest first or not, against
     // random rays: the same nearest hit, ties included, and the same count of tests
@@ -653,11 +667,7 @@ TEST_CASE("packed spheres test a list as testObjectQuickly does, four at a time 
             std::vector<double> reach(ids.size());
             for (std::size_t i = 0; i < ids.size(); ++i) reach[i] = 0.3 * double(i) + 0.5 * u(rng);
             std::sort(reach.begin(), reach.end());
-            Query q;
-            q.origin = {k % 4 == 0 ? int(rng.index(scene.size())) : -1, false};
-            q.ray = Ray{Vec3(4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)), glm::normalize(Vec3(u(rng), u(rng), u(rng)))};
-            if (q.origin.object >= 0) q.ray.o = scene.objects[q.origin.object].bound.c;
-            q.tmax = k % 3 == 0 ? 2.0 + 3.0 * std::abs(u(rng)) : kNoHit;
+            const Query q = randomQuery(scene, rng, u, k);
             for (const bool nearestFirst : {false, true}) {
                 const double* r = nearestFirst ? reach.data() : nullptr;
                 // The loop testBlockers() ran before
@@ -710,4 +720,36 @@ TEST_CASE("a site's order by reach is std::sort's, ties, signs and zeros include
             for (std::size_t k = 0; k < pairs.size(); ++k) REQUIRE(order.entries()[k].id == std::uint32_t(pairs[k].second));
         }
     }
+}
+
+TEST_CASE("the scan tests four spheres at a time as it tests one at a time", "[search][packed]") {
+    // Every object of random scenes (spheres, polygons, the ray's own object; lengths that
+    // are and are not a multiple of four) against random rays: testAll() keeps the same
+    // nearest hit as test() over the same objects, ties included, with the same count
+    Random rng(7);
+    const Uniform u{-1.0, 1.0};
+    std::uint64_t hits = 0, cases = 0;
+    for (Layout layout : {Layout::Overlapping, Layout::Tangent, Layout::Nested, Layout::Polygons}) {
+        for (int size : {3, 17, 40}) {
+            const Scene scene = testing::randomScene(layout, 11 + std::uint64_t(size), size);
+            SphereBatch batch;
+            for (int id = 0; id < scene.size(); ++id) batch.add(scene, id);
+            for (int k = 0; k < 2000; ++k) {
+                const Query q = randomQuery(scene, rng, u, k);
+                Answer want, got;
+                Counters wantN, gotN;
+                batch.test(scene, q, 0, batch.size(), want, wantN);
+                batch.testAll(scene, q, got, gotN);
+                INFO(testing::name(layout) << " size " << size << " case " << k);
+                REQUIRE(got.object == want.object);
+                REQUIRE(got.t == want.t);
+                REQUIRE(gotN.intersectionTests == wantN.intersectionTests);
+                hits += want.object >= 0;
+                ++cases;
+            }
+        }
+    }
+    // Both outcomes occur
+    REQUIRE(hits > cases / 10);
+    REQUIRE(hits < cases);
 }

@@ -45,7 +45,7 @@ Answer LinearSearch::nearest(const Query& q, Counters& n) const {
     // [linear-search]
     // Test every object; keep the nearest hit in front of tmax
     Answer best;
-    all_->test(scene_, q, 0, all_->size(), best, n);
+    all_->testAll(scene_, q, best, n);
     return best;
     // [linear-search]
 }

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include "search/four_spheres.h"
+#ifdef RC_FOUR_SPHERES_AVX2
 #define RC_PACKED_AVX2 1
-#include <immintrin.h>
 #endif
 
 namespace rc {
@@ -17,9 +17,8 @@ __attribute__((target("avx2"))) void testFour(const Scene& scene, const Query& q
                                               const int* ids, const double* reach, std::size_t size, Answer& best,
                                               Counters& n) {
     const Vec3 o = q.ray.o, d = q.ray.d;
-    const __m256d ox = _mm256_set1_pd(o.x), oy = _mm256_set1_pd(o.y), oz = _mm256_set1_pd(o.z);
-    const __m256d dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
-    const __m256d margin = _mm256_set1_pd(-1e-12), zero = _mm256_setzero_pd();
+    const RayFour ray = rayFour(o, d);
+    const __m256d zero = _mm256_setzero_pd();
     const __m128i origin = _mm_set1_epi32(q.origin.object);
     std::size_t i = 0;
     for (; i + 4 <= size; i += 4) {
@@ -34,24 +33,7 @@ __attribute__((target("avx2"))) void testFour(const Scene& scene, const Query& q
         const __m256d cx = _mm256_permute2f128_pd(ab0, ce0, 0x20), cy = _mm256_permute2f128_pd(ab1, ce1, 0x20);
         const __m256d cz = _mm256_permute2f128_pd(ab0, ce0, 0x31), r2 = _mm256_permute2f128_pd(ab1, ce1, 0x31);
         // [packed-four]
-        // BEGIN SOLUTION 06
-        // clearlyMisses(), operation for operation
-        const __m256d fx = _mm256_sub_pd(ox, cx), fy = _mm256_sub_pd(oy, cy), fz = _mm256_sub_pd(oz, cz);
-        const __m256d bb = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(fx, dx), _mm256_mul_pd(fy, dy)),
-                                         _mm256_mul_pd(fz, dz));
-        const __m256d lx = _mm256_sub_pd(fx, _mm256_mul_pd(bb, dx)), ly = _mm256_sub_pd(fy, _mm256_mul_pd(bb, dy)),
-                      lz = _mm256_sub_pd(fz, _mm256_mul_pd(bb, dz));
-        const __m256d disc = _mm256_sub_pd(
-            r2, _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(lx, lx), _mm256_mul_pd(ly, ly)), _mm256_mul_pd(lz, lz)));
-        const __m256d scale = _mm256_add_pd(
-            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(fx, fx), _mm256_mul_pd(fy, fy)), _mm256_mul_pd(fz, fz)), r2);
-        const int rejected = _mm256_movemask_pd(_mm256_cmp_pd(disc, _mm256_mul_pd(margin, scale), _CMP_LT_OQ));
-        // END SOLUTION
-        // BEGIN STUB
-        // // Tutorial 06 is open: clearlyMisses() rejects nothing, and neither does this loop
-        // const int rejected = 0;
-        // (void)ox, (void)oy, (void)oz, (void)dx, (void)dy, (void)dz, (void)cx, (void)cy, (void)cz, (void)margin;
-        // END STUB
+        const int rejected = clearlyMissesFour(ray, cx, cy, cz, r2);
         // [packed-four-all]
         // All four plain spheres, all rejected, all within reach: four tests counted, nothing else
         const int notSpheres = _mm256_movemask_pd(_mm256_cmp_pd(r2, zero, _CMP_LT_OQ));
@@ -88,8 +70,7 @@ PackedSpheres::PackedSpheres(const Scene& scene) {
 
 bool PackedSpheres::simd() {
 #ifdef RC_PACKED_AVX2
-    static const bool avx2 = __builtin_cpu_supports("avx2");
-    return avx2;
+    return fourSpheresAvailable();
 #else
     return false;
 #endif

@@ -1,5 +1,7 @@
 #include "search/sphere_batch.h"
 
+#include "search/four_spheres.h"
+
 namespace rc {
 
 void SphereBatch::add(const Scene& scene, int id) {
@@ -12,6 +14,58 @@ void SphereBatch::add(const Scene& scene, int id) {
     y_.push_back(s.c.y);
     z_.push_back(s.c.z);
     radius2_.push_back(sphere ? s.r * s.r : -1.0);
+}
+
+#ifdef RC_FOUR_SPHERES_AVX2
+namespace {
+/// SphereBatch::test() on the first objects, four at a time; returns how many it tested
+/// (a multiple of four), leaving the rest to test()
+__attribute__((target("avx2"))) std::size_t testFours(const Scene& scene, const Query& q, const int* ids,
+                                                      const double* x, const double* y, const double* z,
+                                                      const double* r2, std::size_t size, Answer& best,
+                                                      Counters& n) {
+    const RayFour ray = rayFour(q.ray.o, q.ray.d);
+    const __m256d zero = _mm256_setzero_pd();
+    const __m128i origin = _mm_set1_epi32(q.origin.object);
+    std::size_t i = 0;
+    for (; i + 4 <= size; i += 4) {
+        // [scan-four]
+        // Four verdicts at once; a group of four plain spheres, all clearly missed, is
+        // four tests counted and nothing else (the common case: a ray misses most objects)
+        const __m256d radius2 = _mm256_loadu_pd(r2 + i);
+        const int rejected =
+            clearlyMissesFour(ray, _mm256_loadu_pd(x + i), _mm256_loadu_pd(y + i), _mm256_loadu_pd(z + i), radius2);
+        const int notSpheres = _mm256_movemask_pd(_mm256_cmp_pd(radius2, zero, _CMP_LT_OQ));
+        const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + i));
+        const int origins = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(four, origin)));
+        if (rejected == 0xF && (notSpheres | origins) == 0) {
+            n.intersectionTests += 4;
+            continue;
+        }
+        // [scan-four]
+        // Else each of the four as test() takes it, with the verdict already computed
+        for (std::size_t j = i; j < i + 4; ++j) {
+            if (r2[j] < 0.0 || ids[j] == q.origin.object) {
+                testObject(scene, q, ids[j], best, n);
+                continue;
+            }
+            ++n.intersectionTests;
+            if ((rejected >> (j - i) & 1) == 0) keepNearer(scene, q, ids[j], best);
+        }
+    }
+    return i;
+}
+}  // namespace
+#endif
+
+void SphereBatch::testAll(const Scene& scene, const Query& q, Answer& best, Counters& n) const {
+    std::size_t tested = 0;
+#ifdef RC_FOUR_SPHERES_AVX2
+    if (fourSpheresAvailable())
+        tested = testFours(scene, q, ids_.data(), x_.data(), y_.data(), z_.data(), radius2_.data(), ids_.size(),
+                           best, n);
+#endif
+    test(scene, q, tested, ids_.size(), best, n);
 }
 
 }  // namespace rc

@@ -45,6 +45,22 @@ std::vector<Ray> randomRays(int n, std::uint64_t seed) {
         rays.push_back({Vec3(g(rng), g(rng), 5.0 + g(rng)), glm::normalize(Vec3(0.3 * g(rng), 0.3 * g(rng), -1.0))});
     return rays;
 }
+
+/// Runs test(q, best, n) on a query for each of `rays`; returns what the answers and
+/// counts add up to, so that no benchmark's work is optimized away
+template <class Test>
+int testRays(const std::vector<Ray>& rays, Test test) {
+    Counters n;
+    int found = 0;
+    for (const Ray& r : rays) {
+        Query q;
+        q.ray = r;
+        Answer best;
+        test(q, best, n);
+        found += best.object;
+    }
+    return found + int(n.intersectionTests);
+}
 }  // namespace
 
 TEST_CASE("sphere intersection", "[sphere]") {
@@ -269,18 +285,7 @@ TEST_CASE("a list tested four spheres at a time against one at a time", "[packed
     std::vector<int> ids;
     for (int id = 0; id < scene.size(); id += 3) ids.push_back(id);
     const std::vector<Ray> rays = randomRays(64, 8);
-    auto run = [&](auto test) {
-        Counters n;
-        int found = 0;
-        for (const Ray& r : rays) {
-            Query q;
-            q.ray = r;
-            Answer best;
-            test(q, best, n);
-            found += best.object;
-        }
-        return found + int(n.intersectionTests);
-    };
+    auto run = [&](auto test) { return testRays(rays, test); };
     std::printf("packed spheres: AVX2 %s\n", PackedSpheres::simd() ? "on" : "off (scalar)");
     BENCHMARK("testObjectQuickly, one at a time: 64 rays x 171 ids") {
         return run([&](const Query& q, Answer& best, Counters& n) {
@@ -297,6 +302,27 @@ TEST_CASE("a list tested four spheres at a time against one at a time", "[packed
             packed.testNearestFirst(scene, q, ids.data(), nullptr, ids.size(), best, n);
         });
     };
+}
+
+TEST_CASE("the complete search's scan, four spheres at a time against one at a time", "[scan]") {
+    // Every object of cube:5 and cube:8 against eye rays: SphereBatch::test() one sphere at
+    // a time, and testAll() (four at a time where the processor has AVX2, else the same loop)
+    for (const char* spec : {"cube:5", "cube:8"}) {
+        const Scene scene = makeBuiltin(spec);
+        SphereBatch batch;
+        for (int id = 0; id < scene.size(); ++id) batch.add(scene, id);
+        const std::vector<Ray> rays = randomRays(64, 5);
+        auto run = [&](bool four) {
+            return testRays(rays, [&](const Query& q, Answer& best, Counters& n) {
+                if (four)
+                    batch.testAll(scene, q, best, n);
+                else
+                    batch.test(scene, q, 0, batch.size(), best, n);
+            });
+        };
+        BENCHMARK(std::string(spec) + ": one at a time, 64 rays") { return run(false); };
+        BENCHMARK(std::string(spec) + ": four at a time (picked at run time), 64 rays") { return run(true); };
+    }
 }
 
 TEST_CASE("a cell's quick test, eight at a time against one at a time", "[directions]") {
