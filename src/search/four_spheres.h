@@ -6,8 +6,8 @@
 /// A ray misses most objects, so most of a scan's tests are this rejection: four of them
 /// computed at once, and one branch for a group of four rather than one a sphere, make a
 /// test about a third of its scalar cost (`raycache table1` prints a test's cost as
-/// "an object test"). Both users test through it, so the uncached scan is as quick per test as
-/// the caches' lists. It answers a tutorial (06), so this header holds a solution region:
+/// "an object test"). Both users test through it, so the uncached scan rejects spheres the way
+/// the caches' lists do. It answers a tutorial (06), so this header holds a solution region:
 /// only the sources that test objects include it.
 #include "search/object_test.h"
 
