@@ -59,5 +59,15 @@ __attribute__((target("avx2"))) inline int clearlyMissesFour(const RayFour& ray,
     // END STUB
 }
 
+/// Bit k is set when object k of four (ids[0..3], squared radii r2) may not be a plain
+/// sphere whose rejection decides it: no sphere (r2 negative: its sign bit is read) or the
+/// ray's own object (`origin`, its id in all four lanes). A group with no bit set and all
+/// four rejected is four tests and nothing else; any other goes one object at a time
+/// through testRejected(), which decides exactly.
+__attribute__((target("avx2"))) inline int notPlainFour(__m256d r2, const int* ids, __m128i origin) {
+    const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ids));
+    return _mm256_movemask_pd(r2) | _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(four, origin)));
+}
+
 }  // namespace rc
 #endif

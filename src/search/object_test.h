@@ -63,6 +63,20 @@ inline bool clearlyMisses(const Vec3& o, const Vec3& d, double cx, double cy, do
     // END STUB
 }
 
+/// What testObjectQuickly() does with object `id` once its quick rejection is known: `r2`
+/// is its squared radius if it is a sphere (negative if it is not), `rejected` whether
+/// clearlyMisses() rejected it, which counts only for a sphere the ray does not leave. For
+/// loops that compute the rejection themselves, several spheres at a time.
+inline void testRejected(const Scene& scene, const Query& q, int id, double r2, bool rejected, Answer& best,
+                         Counters& n) {
+    if (r2 < 0.0 || id == q.origin.object) {
+        testObject(scene, q, id, best, n);  // a polygon, a cone, or the surface the ray leaves
+        return;
+    }
+    ++n.intersectionTests;
+    if (!rejected) keepNearer(scene, q, id, best);
+}
+
 /// testObject() with the quick rejection of a sphere the ray clearly misses: the same
 /// answers and counts, for lists tested one object at a time.
 inline void testObjectQuickly(const Scene& scene, const Query& q, int id, Answer& best, Counters& n) {

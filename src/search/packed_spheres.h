@@ -46,7 +46,7 @@ public:
         for (std::size_t i = 0; i < size; ++i) {
             if (reach && !(reach[i] <= std::min(best.t, q.tmax))) return;
             const Packed& p = spheres_[std::size_t(ids[i])];
-            visit(scene, q, ids[i], p, p.r2 >= 0.0 && clearlyMisses(o, d, p.x, p.y, p.z, p.r2), best, n);
+            testRejected(scene, q, ids[i], p.r2, p.r2 >= 0.0 && clearlyMisses(o, d, p.x, p.y, p.z, p.r2), best, n);
         }
     }
 
@@ -54,19 +54,6 @@ public:
     struct alignas(32) Packed {
         double x, y, z, r2;
     };
-
-    /// One object of a list, whose quick rejection (as a sphere) is `rejected`: what
-    /// testObjectQuickly() does with it.
-    static void visit(const Scene& scene, const Query& q, int id, const Packed& p, bool rejected, Answer& best,
-                      Counters& n) {
-        if (p.r2 < 0.0 || id == q.origin.object) {
-            testObject(scene, q, id, best, n);  // a polygon, a cone, or the surface the ray leaves
-            return;
-        }
-        ++n.intersectionTests;
-        if (rejected) return;
-        keepNearer(scene, q, id, best);
-    }
 
 private:
     /// Four or more: four at a time where the processor can.

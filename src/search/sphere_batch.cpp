@@ -25,7 +25,6 @@ __attribute__((target("avx2"))) std::size_t testFours(const Scene& scene, const 
                                                       const double* r2, std::size_t size, Answer& best,
                                                       Counters& n) {
     const RayFour ray = rayFour(q.ray.o, q.ray.d);
-    const __m256d zero = _mm256_setzero_pd();
     const __m128i origin = _mm_set1_epi32(q.origin.object);
     std::size_t i = 0;
     for (; i + 4 <= size; i += 4) {
@@ -35,23 +34,13 @@ __attribute__((target("avx2"))) std::size_t testFours(const Scene& scene, const 
         const __m256d radius2 = _mm256_loadu_pd(r2 + i);
         const int rejected =
             clearlyMissesFour(ray, _mm256_loadu_pd(x + i), _mm256_loadu_pd(y + i), _mm256_loadu_pd(z + i), radius2);
-        const int notSpheres = _mm256_movemask_pd(_mm256_cmp_pd(radius2, zero, _CMP_LT_OQ));
-        const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ids + i));
-        const int origins = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(four, origin)));
-        if (rejected == 0xF && (notSpheres | origins) == 0) {
+        if (rejected == 0xF && notPlainFour(radius2, ids + i, origin) == 0) {
             n.intersectionTests += 4;
             continue;
         }
         // [scan-four]
         // Else each of the four as test() takes it, with the verdict already computed
-        for (std::size_t j = i; j < i + 4; ++j) {
-            if (r2[j] < 0.0 || ids[j] == q.origin.object) {
-                testObject(scene, q, ids[j], best, n);
-                continue;
-            }
-            ++n.intersectionTests;
-            if ((rejected >> (j - i) & 1) == 0) keepNearer(scene, q, ids[j], best);
-        }
+        for (std::size_t j = 0; j < 4; ++j) testRejected(scene, q, ids[i + j], r2[i + j], rejected >> j & 1, best, n);
     }
     return i;
 }
