@@ -31,9 +31,9 @@ __attribute__((target("avx2"))) std::size_t testFours(const Scene& scene, const 
         // [scan-four]
         // Four verdicts at once; a group of four plain spheres, all clearly missed, is
         // four tests counted and nothing else (the common case: a ray misses most objects)
-        const __m256d radius2 = _mm256_loadu_pd(r2 + i);
-        const int rejected =
-            clearlyMissesFour(ray, _mm256_loadu_pd(x + i), _mm256_loadu_pd(y + i), _mm256_loadu_pd(z + i), radius2);
+        const __m256d cx = _mm256_loadu_pd(x + i), cy = _mm256_loadu_pd(y + i);
+        const __m256d cz = _mm256_loadu_pd(z + i), radius2 = _mm256_loadu_pd(r2 + i);
+        const int rejected = clearlyMissesFour(ray, cx, cy, cz, radius2);
         if (rejected == 0xF && notPlainFour(radius2, ids + i, origin) == 0) {
             n.intersectionTests += 4;
             continue;
