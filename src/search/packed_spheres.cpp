@@ -18,30 +18,41 @@ __attribute__((target("avx2"))) std::size_t testFour(const Scene& scene, const Q
     const RayFour ray = rayFour(q.ray.o, q.ray.d);
     const __m128i origin = _mm_set1_epi32(q.origin.object);
     std::size_t i = 0;
-    for (; i + 4 <= size; i += 4) {
+    while (i + 4 <= size) {
+        // The nearest hit known changes only when an object is tested in full, below
         const double limit = std::min(best.t, q.tmax);
-        if (reach && !(reach[i] <= limit)) return size;
-        // [packed-four]
-        // Four spheres, one load each, turned into four registers of x, y, z and r^2
-        const __m256d a = _mm256_load_pd(&all[ids[i]].x), b = _mm256_load_pd(&all[ids[i + 1]].x);
-        const __m256d c = _mm256_load_pd(&all[ids[i + 2]].x), e = _mm256_load_pd(&all[ids[i + 3]].x);
-        const __m256d ab0 = _mm256_unpacklo_pd(a, b), ab1 = _mm256_unpackhi_pd(a, b);
-        const __m256d ce0 = _mm256_unpacklo_pd(c, e), ce1 = _mm256_unpackhi_pd(c, e);
-        const __m256d cx = _mm256_permute2f128_pd(ab0, ce0, 0x20), cy = _mm256_permute2f128_pd(ab1, ce1, 0x20);
-        const __m256d cz = _mm256_permute2f128_pd(ab0, ce0, 0x31), r2 = _mm256_permute2f128_pd(ab1, ce1, 0x31);
-        // [packed-four]
-        const int rejected = clearlyMissesFour(ray, cx, cy, cz, r2);
-        // [packed-four-all]
-        // All four plain spheres, all rejected, all within reach: four tests counted, nothing else
-        if (rejected == 0xF && notPlainFour(r2, ids + i, origin) == 0 && (!reach || reach[i + 3] <= limit)) {
-            n.intersectionTests += 4;
-            continue;
+        const std::size_t from = i;
+        int rejected = 0;
+        bool beyond = false;
+        // Groups of four rejected at once, with no call: the ray stays in registers
+        for (; i + 4 <= size; i += 4) {
+            if (reach && !(reach[i] <= limit)) {
+                beyond = true;
+                break;
+            }
+            // [packed-four]
+            // Four spheres, one load each, turned into four registers of x, y, z and r^2
+            const __m256d a = _mm256_load_pd(&all[ids[i]].x), b = _mm256_load_pd(&all[ids[i + 1]].x);
+            const __m256d c = _mm256_load_pd(&all[ids[i + 2]].x), e = _mm256_load_pd(&all[ids[i + 3]].x);
+            const __m256d ab0 = _mm256_unpacklo_pd(a, b), ab1 = _mm256_unpackhi_pd(a, b);
+            const __m256d ce0 = _mm256_unpacklo_pd(c, e), ce1 = _mm256_unpackhi_pd(c, e);
+            const __m256d cx = _mm256_permute2f128_pd(ab0, ce0, 0x20), cy = _mm256_permute2f128_pd(ab1, ce1, 0x20);
+            const __m256d cz = _mm256_permute2f128_pd(ab0, ce0, 0x31), r2 = _mm256_permute2f128_pd(ab1, ce1, 0x31);
+            // [packed-four]
+            rejected = clearlyMissesFour(ray, cx, cy, cz, r2);
+            // [packed-four-all]
+            // All four plain spheres, all rejected, all within reach: four tests counted, nothing else
+            if (rejected != 0xF || notPlainFour(r2, ids + i, origin) != 0 || (reach && !(reach[i + 3] <= limit))) break;
+            // [packed-four-all]
         }
-        // [packed-four-all]
+        n.intersectionTests += i - from;
+        if (beyond) return size;
+        if (i + 4 > size) break;
         for (std::size_t j = 0; j < 4; ++j) {
             if (reach && !(reach[i + j] <= std::min(best.t, q.tmax))) return size;
             testRejected(scene, q, ids[i + j], all[ids[i + j]].r2, rejected >> j & 1, best, n);
         }
+        i += 4;
     }
     return i;
 }

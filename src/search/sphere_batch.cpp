@@ -26,23 +26,29 @@ __attribute__((target("avx2"))) std::size_t testFours(const Scene& scene, const 
                                                       Counters& n) {
     const RayFour ray = rayFour(q.ray.o, q.ray.d);
     const __m128i origin = _mm_set1_epi32(q.origin.object);
+    const std::size_t whole = size / 4 * 4;
     std::size_t i = 0;
-    for (; i + 4 <= size; i += 4) {
+    while (i < whole) {
         // [scan-four]
-        // Four verdicts at once; a group of four plain spheres, all clearly missed, is
-        // four tests counted and nothing else (the common case: a ray misses most objects)
-        const __m256d cx = _mm256_loadu_pd(x + i), cy = _mm256_loadu_pd(y + i);
-        const __m256d cz = _mm256_loadu_pd(z + i), radius2 = _mm256_loadu_pd(r2 + i);
-        const int rejected = clearlyMissesFour(ray, cx, cy, cz, radius2);
-        if (rejected == 0xF && notPlainFour(radius2, ids + i, origin) == 0) {
-            n.intersectionTests += 4;
-            continue;
+        // Four verdicts at once; groups of four plain spheres, all clearly missed, are four
+        // tests counted each and nothing else (the common case: a ray misses most objects).
+        // This inner loop calls nothing, so the ray stays in registers from group to group
+        const std::size_t from = i;
+        int rejected = 0;
+        for (; i < whole; i += 4) {
+            const __m256d cx = _mm256_loadu_pd(x + i), cy = _mm256_loadu_pd(y + i);
+            const __m256d cz = _mm256_loadu_pd(z + i), radius2 = _mm256_loadu_pd(r2 + i);
+            rejected = clearlyMissesFour(ray, cx, cy, cz, radius2);
+            if (rejected != 0xF || notPlainFour(radius2, ids + i, origin) != 0) break;
         }
+        n.intersectionTests += i - from;
+        if (i == whole) break;
         // [scan-four]
         // Else each of the four as test() takes it, with the verdict already computed
         for (std::size_t j = 0; j < 4; ++j) testRejected(scene, q, ids[i + j], r2[i + j], rejected >> j & 1, best, n);
+        i += 4;
     }
-    return i;
+    return whole;
 }
 }  // namespace
 #endif
