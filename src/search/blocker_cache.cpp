@@ -210,7 +210,8 @@ void BlockerCache::testBlockers(const Query& q, const BlockerList& list, Answer&
     // The paper: every potential blocker is tested. Blocker+: nearest first, and none
     // beyond the nearest hit known (or the light) can come first. Four spheres are
     // rejected at a time where the processor can (PackedSpheres): the same answers and counts
-    packed_->testNearestFirst(scene_, q, list.ids.data(), plus_ ? list.reach.data() : nullptr, list.ids.size(), best, n);
+    const double* reach = plus_ ? list.reach.data() : nullptr;
+    packed_->testNearestFirst(scene_, q, list.ids.data(), reach, list.ids.size(), best, n);
     // [test-blockers]
 }
 

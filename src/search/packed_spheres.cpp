@@ -32,17 +32,23 @@ __attribute__((target("avx2"))) std::size_t testFour(const Scene& scene, const Q
             }
             // [packed-four]
             // Four spheres, one load each, turned into four registers of x, y, z and r^2
-            const __m256d a = _mm256_load_pd(&all[ids[i]].x), b = _mm256_load_pd(&all[ids[i + 1]].x);
-            const __m256d c = _mm256_load_pd(&all[ids[i + 2]].x), e = _mm256_load_pd(&all[ids[i + 3]].x);
+            const __m256d a = _mm256_load_pd(&all[ids[i]].x);
+            const __m256d b = _mm256_load_pd(&all[ids[i + 1]].x);
+            const __m256d c = _mm256_load_pd(&all[ids[i + 2]].x);
+            const __m256d e = _mm256_load_pd(&all[ids[i + 3]].x);
             const __m256d ab0 = _mm256_unpacklo_pd(a, b), ab1 = _mm256_unpackhi_pd(a, b);
             const __m256d ce0 = _mm256_unpacklo_pd(c, e), ce1 = _mm256_unpackhi_pd(c, e);
-            const __m256d cx = _mm256_permute2f128_pd(ab0, ce0, 0x20), cy = _mm256_permute2f128_pd(ab1, ce1, 0x20);
-            const __m256d cz = _mm256_permute2f128_pd(ab0, ce0, 0x31), r2 = _mm256_permute2f128_pd(ab1, ce1, 0x31);
+            const __m256d cx = _mm256_permute2f128_pd(ab0, ce0, 0x20);
+            const __m256d cy = _mm256_permute2f128_pd(ab1, ce1, 0x20);
+            const __m256d cz = _mm256_permute2f128_pd(ab0, ce0, 0x31);
+            const __m256d r2 = _mm256_permute2f128_pd(ab1, ce1, 0x31);
             // [packed-four]
             rejected = clearlyMissesFour(ray, cx, cy, cz, r2);
             // [packed-four-all]
-            // All four plain spheres, all rejected, all within reach: four tests counted, nothing else
-            if (rejected != 0xF || notPlainFour(r2, ids + i, origin) != 0 || (reach && !(reach[i + 3] <= limit))) break;
+            // All four plain spheres, all rejected, all within reach: on to the next group (the
+            // four tests are counted when this loop stops); any other group is tested one by one
+            const bool allWithin = !reach || reach[i + 3] <= limit;
+            if (rejected != 0xF || notPlainFour(r2, ids + i, origin) != 0 || !allWithin) break;
             // [packed-four-all]
         }
         n.intersectionTests += i - from;
