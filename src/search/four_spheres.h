@@ -4,10 +4,10 @@
 /// by the complete search's scan (SphereBatch::testAll) and the lists' tests (PackedSpheres).
 ///
 /// A ray misses most objects, so most of a scan's tests are this rejection: four of them
-/// computed at once, and one branch for a group of four rather than one a sphere, make a
-/// test about a third of its scalar cost (`raycache table1` prints a test's cost as
-/// "an object test"). Both users test through it, so the uncached scan rejects spheres the way
-/// the caches' lists do. It answers a tutorial (06), so this header holds a solution region:
+/// computed at once, and groups rejected whole stepped over by a loop that calls nothing,
+/// make a test a quarter to a third of its scalar cost (`raycache table1` prints a test's
+/// cost as "an object test"). Both users test through it, so the uncached scan rejects
+/// spheres the way the caches' lists do. It answers a tutorial (06), so this header holds a solution region:
 /// only the sources that test objects include it.
 #include "search/object_test.h"
 

@@ -40,7 +40,7 @@ public:
     }
 
     /// test() on every object, four at a time where the processor can (AVX2): the same
-    /// answers and counts, and a branch a group rather than a sphere.
+    /// answers and counts, and no call for a group the ray clearly misses whole.
     void testAll(const Scene& scene, const Query& q, Answer& best, Counters& n) const;
 
 private:
