@@ -236,6 +236,22 @@ TEST_CASE("The compare caption gives the right render's tests and misses against
     REQUIRE(lines.size() == 3);
 }
 
+TEST_CASE("Compared with an uncached render, the caption gives no ratio of misses", "[view]") {
+    // The left has no cache, so no misses: "0.00x the left's 0" would read as a measurement
+    rc::SessionState none = session("cube:3", rc::CacheKind::None, 48);
+    rc::SessionState blocker = session("cube:3", rc::CacheKind::Blocker, 48, rc::OrderKind::BreadthFirst);
+    REQUIRE(none.runUntil(rc::RunGoal::ToEnd, 0));
+    REQUIRE(blocker.runUntil(rc::RunGoal::ToEnd, 0));
+    REQUIRE(none.session().counters().misses == 0);
+    const auto misses = blocker.session().counters().misses;
+    REQUIRE(misses > 0);
+    const std::vector<std::string> lines = rc::compareCaption(none, blocker);
+    const std::string want = "misses " + std::to_string(misses) + " (the left has no cache misses)";
+    INFO(want);
+    REQUIRE(std::find(lines.begin(), lines.end(), want) != lines.end());
+    for (const std::string& line : lines) REQUIRE(line.find("0.00x") == std::string::npos);
+}
+
 TEST_CASE("A pixel's ray tree: every ray it traced, each under the ray that spawned it", "[view]") {
     rc::SessionState s = session("cube:3", rc::CacheKind::Blocker, 48, rc::OrderKind::BreadthFirst);
     REQUIRE(s.runUntil(rc::RunGoal::ToEnd, 0));

@@ -193,6 +193,13 @@ ParseResult parseGuiOptions(const QStringList& args, GuiOptions& out, QString& m
         message = QString::fromStdString(e.what());
         return ParseResult::Error;
     }
+    // A tour's stops set the viewer's settings: one given beside --tour would be dropped unseen
+    if (!f.tour.empty())
+        for (const std::string& name : rc::settingNames())
+            if (app.count(name == "scene" ? name : "--" + name) > 0) {
+                message = q("--tour: each stop sets its own " + name + "; give it in the tour file, not beside --tour");
+                return ParseResult::Error;
+            }
     rc::ViewerSettings s;
     std::string why;
     if (!settings.read(s, why)) {

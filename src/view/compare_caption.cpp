@@ -16,7 +16,11 @@ std::vector<std::string> compareCaption(const SessionState& left, const SessionS
     // Its cache misses, of every path, against the left's
     const double m = double(left.session().counters().misses);
     const double n = double(right.session().counters().misses);
-    std::snprintf(line, sizeof line, "misses %.0f = %.2fx the left's %.0f", n, m > 0 ? n / m : 0.0, m);
+    // With no cache on the left there is nothing to divide by: a ratio would read as 0.00x
+    if (m > 0)
+        std::snprintf(line, sizeof line, "misses %.0f = %.2fx the left's %.0f", n, n / m, m);
+    else
+        std::snprintf(line, sizeof line, "misses %.0f (the left has no cache misses)", n);
     out.push_back(line);
     if (left.session().steps() != right.session().steps()) {
         std::snprintf(line, sizeof line, "catching up: step %lld of %lld", (long long)right.session().steps(),

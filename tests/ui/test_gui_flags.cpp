@@ -52,3 +52,23 @@ TEST_CASE("A bad GUI flag is one line on stderr and exit 2", "[gui][cli]") {
         REQUIRE(err.count('\n') == 1);
     }
 }
+
+TEST_CASE("With --tour, a viewer setting on the command line is refused, not dropped", "[gui][cli][tour]") {
+    // Each stop sets scene, cache, size and the rest: one given beside the tour would be ignored unseen
+    for (const QStringList& extra : {QStringList{"balls:4"}, QStringList{"--width", "512"},
+                                     QStringList{"--cache", "none"}, QStringList{"--steps", "10"}}) {
+        INFO(extra.join(' ').toStdString());
+        GuiOptions o;
+        QString why;
+        REQUIRE(parse(QStringList{"--tour", "tours/hanrahan86.json", "--stop", "8"} + extra, o, why) ==
+                ParseResult::Error);
+        REQUIRE(why.startsWith("--tour: "));
+        REQUIRE(why.contains(extra[0].startsWith("--") ? extra[0].mid(2) : QString("scene")));
+    }
+    // The window's own flags still go with a tour
+    GuiOptions o;
+    QString why;
+    REQUIRE(parse({"--tour", "tours/hanrahan86.json", "--stop", "8", "--window", "1280x720", "--large-fonts"}, o, why) ==
+            ParseResult::Ok);
+    REQUIRE(o.stop == 8);
+}
