@@ -638,7 +638,7 @@ void SceneView::paintLabels(QPainter& p, double lw) {
                   palette::kCylinder);
         label(toWidget(k.focus->ray.o) + QPointF(8 * lw, 8 * lw + fm.height()), "ray", palette::kRay);
     }
-    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i), palette::kLight);
+    for (std::size_t i = 0; i < k.lights.size(); ++i) label(toWidget(k.lights[i]), QString("light %1").arg(i + 1), palette::kLight);
     if (k.hull.valid() && hullShown_) {
         const rc::Sphere& a = k.hull.a;
         label(toWidget(a.c) + QPointF(0, a.r * scale_ * 0.7), "origin", palette::kOrigin);

@@ -30,7 +30,7 @@ Registry<CacheInfo>& registry() {
         b.add({"cylinder", "Speer, DeRose and Barsky's cylinder of safety",
                [](const Scene& s, const CompleteSearch& c) { return std::make_unique<CylinderCache>(s, c); },
                Deferral::Always});
-        b.add({"blocker", "Hanrahan's blocker lists (the paper's)",
+        b.add({"blocker", "Hanrahan's blocker lists, RayCache's reading of the paper's cache",
                [](const Scene& s, const CompleteSearch& c) {
                    return std::make_unique<BlockerCache>(s, c, BlockerCache::Variant::Paper);
                },

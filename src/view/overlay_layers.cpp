@@ -97,9 +97,10 @@ std::vector<std::string> focusCaption(const SessionState& s, const Selection& se
 
 std::string missCauseText(const SessionState& s, const RayFocus& f) {
     const MissCause c = missCauseOf(s, f);
-    // A shadow ray's entry holds its light, not an object
+    // A shadow ray's entry holds its light, not an object; lights count from 1, as paths
+    // name them ("shadow 1")
     const std::string was = c.cachedObject >= 0              ? "#" + std::to_string(c.cachedObject)
-                            : f.kind == RayKind::Shadow && f.light >= 0 ? "light " + std::to_string(f.light)
+                            : f.kind == RayKind::Shadow && f.light >= 0 ? "light " + std::to_string(f.light + 1)
                                                                         : "nothing";
     if (c.reason == MissReason::TargetMissed) return "miss: the cached target " + was + " is not hit";
     if (c.reason == MissReason::BlockerHit)
