@@ -45,7 +45,13 @@ if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
 cd "$edition"
-cmake --preset default -DRAYCACHE_GUI=OFF -DRAYCACHE_WEB=OFF -DRAYCACHE_DOCS=OFF "${launcher[@]}" >/dev/null
+# No -DRAYCACHE_DOCS=OFF: the edition's own tutorials/student_edition.cmake must leave the
+# instructor's docs site out of a student build
+cmake --preset default -DRAYCACHE_GUI=OFF -DRAYCACHE_WEB=OFF "${launcher[@]}" >/dev/null
+grep -q '^RAYCACHE_DOCS:BOOL=OFF$' build/CMakeCache.txt ||
+  { echo "student edition: a student build would build the docs site (RAYCACHE_DOCS is not OFF)" >&2; exit 1; }
+grep -q '^RAYCACHE_STUDENT:BOOL=ON$' build/CMakeCache.txt ||
+  { echo "student edition: the edition's default build is not a student build" >&2; exit 1; }
 tutorials=$(ls -d tutorials/0*-* | sed 's|tutorials/||')
 targets=(raycache)
 for t in $tutorials; do targets+=("tutorial_${t:0:2}_exercise"); done

@@ -174,6 +174,8 @@ int renderCommand(const RenderArgs& a) {
         std::fprintf(stderr, "raycache: %s\n", notYet.c_str());
         return 1;
     }
+    // ... and one whose other holes are still stubs says which ran
+    if (const std::string stubs = stubsRanNote(); !stubs.empty()) std::fprintf(stderr, "raycache: %s\n", stubs.c_str());
 
     if (!a.out.empty() || a.hash) {
         const std::vector<std::uint8_t> rgb = run.image.rgb8();

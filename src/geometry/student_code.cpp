@@ -40,4 +40,13 @@ std::string cannotDrawYet() {
            "(tutorials/01-first-ray/exercise.cpp) first.";
 }
 
+std::string stubsRanNote() {
+    std::string which;
+    for (int k = 2; k < int(ran.size()); ++k)
+        if (stubRan(k)) which += (which.empty() ? "0" : ", 0") + std::to_string(k);
+    if (which.empty()) return "";
+    return "this render ran the stub as shipped of tutorial(s) " + which +
+           ": until they are done, its counts (and where a stub answers rays, its image) are not the reference's.";
+}
+
 }  // namespace rc

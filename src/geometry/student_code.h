@@ -37,4 +37,9 @@ bool stubRan(int tutorial);
 /// sentence that says so and which tutorial to do first; "" otherwise.
 std::string cannotDrawYet();
 
+/// When the stubs of tutorials other than 01 ran (each as shipped), the one sentence that
+/// names them: what was drawn may not be the reference's answers and counts until they are
+/// done; "" otherwise.
+std::string stubsRanNote();
+
 }  // namespace rc

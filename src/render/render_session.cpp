@@ -96,7 +96,8 @@ bool RenderSession::step() {
         // What the sinks hear (made only when one listens)
         auto tell = [&](bool deferred) {
             if (sinks_.empty()) return;
-            const TraceEvent event{steps_, task, lookup, int(counters_.intersectionTests - testsBefore), deferred};
+            const int tests = int(counters_.intersectionTests - testsBefore);
+            const TraceEvent event{steps_, task, lookup, tests, deferred};
             for (TraceSink* s : sinks_) s->onEvent(event);
         };
         if (!lookup.known) {
@@ -107,7 +108,8 @@ bool RenderSession::step() {
             continue;
         }
         ++counters_.rays[int(task.query.kind)];
-        if (task.query.kind == RayKind::Primary && lookup.answer().object >= 0) ++counters_.primaryHits;
+        const bool primaryHit = task.query.kind == RayKind::Primary && lookup.answer().object >= 0;
+        if (primaryHit) ++counters_.primaryHits;
         if (lookup.decision == Decision::Hit) ++counters_.hits;
         if (lookup.decision == Decision::Miss) {
             ++counters_.misses;
@@ -115,14 +117,19 @@ bool RenderSession::step() {
             // A miss at a parent flushes the entries of its children
             if (order_->flushesChildren()) paths_.flushBelow(task.node);
         }
-        if (options_.verify && (lookup.decision != Decision::Uncached || options_.accel != AccelKind::Linear)) {
+        if (options_.verify) {
+            // (an uncached answer of the linear scan is the verifier's own: nothing to compare)
+            const bool linear = options_.accel == AccelKind::Linear;
             Counters scratch;
-            if (!(verifier_.nearest(task.query, scratch) == lookup.answer())) ++counters_.verifyDisagreements;
+            if ((lookup.decision != Decision::Uncached || !linear) &&
+                !(verifier_.nearest(task.query, scratch) == lookup.answer()))
+                ++counters_.verifyDisagreements;
         }
         // Shade: add to the pixel, spawn the children; the cache tree gives each its path
         children_.clear();
         shade(*scene_, task, lookup.answer(), options_.shading, image_, children_);
-        for (RayTask& c : children_) c.node = paths_.child(task.node, c.query.kind, c.query.light, c.sample);
+        for (RayTask& c : children_)
+            c.node = paths_.child(task.node, c.query.kind, c.query.light, c.sample);
         // [session-step]
         tell(false);
         order_->committed(task, lookup.decision, children_);

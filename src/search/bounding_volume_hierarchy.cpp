@@ -114,7 +114,9 @@ BoundingVolumeHierarchy::Ref BoundingVolumeHierarchy::build(std::vector<int>& id
         std::array<int, kBins> binCount{};
         std::array<std::array<double, 6>, kBins> binBox;
         for (auto& b : binBox) b = {kNoHit, kNoHit, kNoHit, -kNoHit, -kNoHit, -kNoHit};
-        auto binOf = [&](int id) { return std::min(kBins - 1, int(kBins * (centroid(id, axis) - clo[axis]) / span)); };
+        auto binOf = [&](int id) {
+            return std::min(kBins - 1, int(kBins * (centroid(id, axis) - clo[axis]) / span));
+        };
         for (int i = begin; i < end; ++i) {
             const int b = binOf(ids[i]);
             ++binCount[b];

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/safety_cylinder.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define RC_CLEARANCE_AVX2 1
 #include <immintrin.h>
@@ -22,6 +24,7 @@ ClearanceScan::ClearanceScan(const Scene& scene) : size_(scene.objects.size()) {
 }
 
 namespace {
+// BEGIN SOLUTION 02
 /// The segment's inverse squared length, as SegmentClearance keeps it (0 for a point).
 double inverseLength2(const Vec3& ab) {
     const double len2 = (ab.x * ab.x + ab.y * ab.y) + ab.z * ab.z;
@@ -73,20 +76,33 @@ __attribute__((target("avx2"))) double clearanceFour(const double* x, const doub
 }
 // [clearance-four]
 #endif
+// END SOLUTION
+// BEGIN STUB
+// // Tutorial 02 open: the scalar loop below measures with the student's rc::segmentDistance
+// END STUB
 }  // namespace
 
 double ClearanceScan::clearanceScalar(const Vec3& a, const Vec3& b, int skip, int skipToo, double cap,
                                       int* nearest) const {
     // SegmentClearance::distance() and found() on every object in id order
+    // BEGIN SOLUTION 02
     const Vec3 ab = b - a;
     const double inv = inverseLength2(ab);
+    // END SOLUTION
+    // BEGIN STUB
+    // END STUB
     double least = cap;
     int at = -1;
     for (std::size_t i = 0; i < size_; ++i) {
+        // BEGIN SOLUTION 02
         const double px = x_[i] - a.x, py = y_[i] - a.y, pz = z_[i] - a.z;
         const double t = std::clamp(((px * ab.x + py * ab.y) + pz * ab.z) * inv, 0.0, 1.0);
         const double qx = px - t * ab.x, qy = py - t * ab.y, qz = pz - t * ab.z;
         const double d = std::sqrt((qx * qx + qy * qy) + qz * qz) - r_[i];
+        // END SOLUTION
+        // BEGIN STUB
+        // const double d = segmentDistance(Vec3(x_[i], y_[i], z_[i]), a, b) - r_[i];
+        // END STUB
         if (int(i) == skip || int(i) == skipToo || !(d < least)) continue;
         least = d;
         at = int(i);
@@ -99,7 +115,12 @@ double ClearanceScan::clearance(const Vec3& a, const Vec3& b, int skip, int skip
                                 int* nearest) const {
 #ifdef RC_CLEARANCE_AVX2
     static const bool avx2 = __builtin_cpu_supports("avx2");
+    // BEGIN SOLUTION 02
     if (avx2) return clearanceFour(x_.data(), y_.data(), z_.data(), r_.data(), x_.size(), a, b, skip, skipToo, cap, nearest);
+    // END SOLUTION
+    // BEGIN STUB
+    // (void)avx2;  // tutorial 02 open: one sphere at a time, with the student's distance
+    // END STUB
 #endif
     return clearanceScalar(a, b, skip, skipToo, cap, nearest);
 }

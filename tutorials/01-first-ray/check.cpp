@@ -155,6 +155,31 @@ TEST_CASE("standardAlgorithm agrees with the oracle on random scenes", "[tutoria
     CHECK(skipped < cases / 10);
 }
 
+TEST_CASE("standardTest gives a tie to the lower id, in whatever order objects are tested", "[tutorial01]") {
+    // Caches and the BVH call standardTest in their own order, not by id: two coincident
+    // spheres, objects 0 and 2, must come out the same whichever is tested first
+    rc::Scene s;
+    s.materials.push_back({});
+    s.addSphere({rc::Vec3(0.0, 0.0, 5.0), 1.0}, 0);
+    s.addSphere({rc::Vec3(4.0, 0.0, 5.0), 1.0}, 0);
+    s.addSphere({rc::Vec3(0.0, 0.0, 5.0), 1.0}, 0);  // object 0 again
+    s.finalize();
+    rc::Query q;
+    q.ray = {rc::Vec3(0.0), rc::Vec3(0.0, 0.0, 1.0)};
+    for (const std::vector<int>& order : {std::vector<int>{2, 0, 1}, {0, 2, 1}, {1, 2, 0}}) {
+        rc::Answer best;
+        rc::Counters n;
+        for (int id : order) rc::standardTest(s, q, id, best, n);
+        INFO("objects tested in the order " << order[0] << ", " << order[1] << ", " << order[2]
+                                            << ": yours keeps object " << best.object << " at t = " << best.t
+                                            << "; objects 0 and 2 are the same sphere, hit at t = 4, and a tie "
+                                               "goes to the lower id, 0");
+        REQUIRE(best.object == 0);
+        REQUIRE(std::abs(best.t - 4.0) <= 1e-12);
+        REQUIRE(n.intersectionTests == 3);
+    }
+}
+
 TEST_CASE("standardAlgorithm finds what the eye sees in cube:3", "[tutorial01]") {
     const rc::Scene s = rc::makeBuiltin("cube:3");
     const int w = 48, h = 48;

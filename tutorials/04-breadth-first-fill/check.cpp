@@ -119,6 +119,12 @@ FillReport checkFill(int width, int height, int band, const std::vector<int>& ke
     auto bandOf = [&](int p) { return p / width / rows; };
     std::vector<int> region(key.size(), -1), deferredIn(key.size(), -1);
     std::vector<int> members;  // the current region's pixels
+    // Deferred pixels not yet seeded or answered: they seed the next regions, before any untouched pixel
+    std::vector<char> waiting(key.size(), 0);
+    long waitingCount = 0;
+    auto served = [&](int p) {
+        if (waiting[p]) waiting[p] = 0, --waitingCount;
+    };
     int current = -1, cached = 0, currentBand = 0;
     FillReport report;
     auto fail = [&](const std::string& what, int p) {
@@ -160,6 +166,12 @@ FillReport checkFill(int width, int height, int band, const std::vector<int>& ke
         switch (visits[i].step) {
             case tutorial::Step::Seed:
                 if (current >= 0) endRegion();
+                if (waitingCount > 0 && !waiting[p])
+                    fail("seeded a pixel no region had tried while pixels deferred at an earlier region's border "
+                         "were still waiting: a new region starts from a deferred pixel (pending_), and from "
+                         "an untouched one only when none is left",
+                         p);
+                served(p);
                 currentBand = bandOf(p);
                 cached = key[p];
                 region[p] = ++current;
@@ -184,9 +196,11 @@ FillReport checkFill(int width, int height, int band, const std::vector<int>& ke
                 if (answer) {
                     region[p] = current;
                     members.push_back(p);
+                    served(p);
                 } else {
                     deferredIn[p] = current;
                     ++report.deferrals;
+                    if (!waiting[p]) waiting[p] = 1, ++waitingCount;
                 }
                 break;
             }
@@ -260,6 +274,43 @@ TEST_CASE("the fill fills random images region by region, band by band", "[tutor
         deferrals += mine.deferrals;
     }
     CHECK(deferrals > 0);
+}
+
+TEST_CASE("without cheap tests, every ray is asked fully when its turn comes", "[tutorial04]") {
+    // A cache whose misses are not deferred (blocker+dir; blocker+ in front of a grid or a
+    // BVH): the order is built with cheapTests false, and a queued pixel is asked with
+    // LookupMode::Full, never deferred. One scanline a band is a walk, which the fill never
+    // sees: bands of two rows or more
+    tutorial::Random rnd(1981);
+    for (int i = 0; i < 60; ++i) {
+        const int width = 2 + rnd.index(30), height = 2 + rnd.index(30);
+        const int band = 2 + rnd.index(height - 1);
+        const std::vector<int> key = randomKeys(rnd, width, height);
+        rc::BreadthFirstOrder order(width, 0, height, band, 1, false, [](int pixel, int, rc::RayTask& t) {
+            t.pixel = pixel;
+            t.node = 0;
+        });
+        std::vector<int> picked(key.size(), 0);
+        std::vector<rc::RayTask> children;
+        int cached = INT_MIN;
+        long picks = 0;
+        while (const std::optional<rc::Pick> pick = order.next()) {
+            const int p = pick->task->pixel;
+            INFO("image " << i << " (" << width << "x" << height << ", bands of " << band << " rows), pick " << picks
+                          << ": pixel (" << p % width << ", " << p / width << ")");
+            if (++picks > long(key.size())) FAIL("the fill picked more rays than the image has pixels");
+            if (pick->mode != rc::LookupMode::Full)
+                FAIL("asked with a cheap test only, although the order was made with cheapTests false "
+                     "(cheapTests_): every ray must be asked fully");
+            if (++picked[std::size_t(p)] > 1) FAIL("this pixel was picked twice");
+            // A full lookup: the cache answers when it holds the key, else the search reloads it
+            const bool same = key[std::size_t(p)] == cached;
+            cached = key[std::size_t(p)];
+            order.committed(*pick->task, same ? rc::Decision::Hit : rc::Decision::Miss, children);
+        }
+        INFO("image " << i << " (" << width << "x" << height << ", bands of " << band << " rows)");
+        REQUIRE(picks == long(key.size()));
+    }
 }
 
 TEST_CASE("the fill makes one complete search per region of cube:3's eye rays", "[tutorial04]") {
