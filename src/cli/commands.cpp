@@ -199,6 +199,8 @@ int renderCommand(const RenderArgs& a) {
                     (unsigned long long)n.misses);
         if (a.flags.verify) std::printf(", %llu disagreements", (unsigned long long)n.verifyDisagreements);
         std::printf("\n");
+        // A first render with no -o: say where the picture did not go
+        if (a.out.empty() && !a.hash) std::fprintf(stderr, "raycache: no image written (-o FILE.png writes one)\n");
     }
     return a.flags.verify && n.verifyDisagreements > 0 ? 1 : 0;
 }
