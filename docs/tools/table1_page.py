@@ -217,7 +217,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 configs = list(OrderedDict((config(r), None) for r in rows))
-fig, axes = plt.subplots(1, len(scenes), figsize=(3.6 * len(scenes), 3.4), sharey=True, squeeze=False)
+# Read from the back row: one x scale for every scene, text at projector size, and the
+# legend (the paper's ticks too) above the panels, where it covers no bar
+fig, axes = plt.subplots(1, len(scenes), figsize=(4.2 * len(scenes), 4.6), sharex=True, sharey=True,
+                         squeeze=False)
 for ax, (scene, rs) in zip(axes[0], scenes.items()):
     by = {config(r): r for r in rs}
     ys = range(len(configs))
@@ -225,17 +228,21 @@ for ax, (scene, rs) in zip(axes[0], scenes.items()):
     k = [num(by[c]["tests_ratio"]) if c in by else 0 for c in configs]
     ax.barh([y - 0.2 for y in ys], t, height=0.38, color="#3b6fb6", label="time")
     ax.barh([y + 0.2 for y in ys], k, height=0.38, color="#e08a2c", label="tests")
+    ticked = False
     for y, c in zip(ys, configs):
         p = num(by[c]["paper_time_ratio"]) if c in by else None
         if p is not None:
-            ax.plot([p, p], [y - 0.45, y + 0.05], color="black", linewidth=2)
+            ax.plot([p, p], [y - 0.45, y + 0.05], color="black", linewidth=2.5,
+                    label=None if ticked else "the paper's time")
+            ticked = True
     ax.axvline(1.0, color="#888", linewidth=0.8, linestyle=":")
-    ax.set_title(scene, fontsize=10)
+    ax.set_title(scene, fontsize=13)
     ax.set_yticks(list(ys))
-    ax.set_yticklabels(configs, fontsize=8)
+    ax.set_yticklabels(configs, fontsize=11)
     ax.invert_yaxis()
-    ax.tick_params(axis="x", labelsize=8)
-    ax.set_xlabel("relative to none, scanline", fontsize=8)
-axes[0][0].legend(fontsize=8, loc="lower right")
-fig.tight_layout()
+    ax.tick_params(axis="x", labelsize=11)
+    ax.set_xlabel("relative to none, scanline", fontsize=11)
+handles, labels = axes[0][0].get_legend_handles_labels()
+fig.legend(handles, labels, loc="upper center", ncol=len(labels), fontsize=12, frameon=False)
+fig.tight_layout(rect=(0, 0, 1, 0.92))
 fig.savefig(out_png, dpi=90)
