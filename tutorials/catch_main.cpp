@@ -46,8 +46,8 @@ int main(int argc, char* argv[]) {
         std::printf("\nSOLVED: every check passes.\n");
     } else {
         std::printf(
-            "\nNOT YET: %d assertion(s) failed. Read the first failure above: its test case names the\n"
-            "rule your code breaks, and the lines after \"with messages:\" give the case, the\n"
+            "\nNOT YET: %d assertion(s) failed. Read the first failure above: its test case says what\n"
+            "is checked, and the lines after \"with message(s):\" give the case, the\n"
             "expected value and yours. The tutorial's page has hints, from a nudge to a\n"
             "near-solution.\n",
             failed);

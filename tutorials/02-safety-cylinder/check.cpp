@@ -94,8 +94,12 @@ TEST_CASE("segmentDistance agrees with the oracle on random points and segments"
         const rc::Vec3 b = i % 10 == 0 ? a : a + scale * rnd.logUniform(-4.0, 0.5) * rnd.direction();
         const rc::Vec3 p = scale * rnd.inBox(2.0);
         const double want = segmentGap(p, a, b);
-        INFO(std::setprecision(17) << "case " << i << ": scale " << scale << ", expected " << want);
-        REQUIRE(std::abs(yourDistance(frame(frames, scale), p, a, b) - want) <= closeEnough(scale));
+        const double got = yourDistance(frame(frames, scale), p, a, b);
+        INFO(std::setprecision(17) << "case " << i << ": point (" << p.x << ", " << p.y << ", " << p.z
+                                   << "), segment (" << a.x << ", " << a.y << ", " << a.z << ") to (" << b.x
+                                   << ", " << b.y << ", " << b.z << "), scale " << scale << ": expected " << want
+                                   << ", yours " << got);
+        REQUIRE(std::abs(got - want) <= closeEnough(scale));
     }
 }
 

@@ -159,7 +159,10 @@ TEST_CASE("hullDistance is exact outside the hull and never puts a point of the 
             REQUIRE(got >= want - tolerance);
             ++outside;
         } else if (want < -1e-9) {
-            INFO(std::setprecision(17) << "this point is inside the hull, but your distance says outside");
+            INFO(std::setprecision(17) << (std::isnan(got) ? "this point is inside the hull, and your distance is NaN "
+                                                             "(a square root of a negative number? one sphere inside "
+                                                             "the other leaves no cone between them)"
+                                                           : "this point is inside the hull, but your distance says outside"));
             REQUIRE(got <= 1e-9);
             ++inside;
         }

@@ -143,7 +143,9 @@ FillReport checkFill(int width, int height, int band, const std::vector<int>& ke
                 const int q = ny * width + nx;
                 if (bandOf(q) != currentBand || region[q] >= 0) continue;
                 if (key[q] == cached)
-                    fail("the region stopped growing although this neighbour has the seed's key (it must be answered)", q);
+                    fail("the region stopped growing although this neighbour has the seed's key (it must be "
+                         "answered; a queued pixel asked with LookupMode::Full counts as a new seed)",
+                         q);
                 if (deferredIn[q] != current)
                     fail("this pixel borders the region but was never tested against the cache and deferred "
                          "(a Defer visit) while the region grew",
