@@ -39,9 +39,8 @@ int main(int argc, char* argv[]) {
     for (int k = 1; k < nn && first.empty() && !rc::stubRan(nn); ++k)
         if (rc::stubRan(k))
             first = k == 1 ? rc::cannotDrawYet()
-                           : "This check ran tutorial " + std::string(k < 10 ? "0" : "") + std::to_string(k) +
-                                 "'s stub as shipped, so do tutorial " + std::string(k < 10 ? "0" : "") +
-                                 std::to_string(k) + " first.";
+                           : "This check ran tutorial " + rc::tutorialNumber(k) +
+                                 "'s stub as shipped, so do tutorial " + rc::tutorialNumber(k) + " first.";
     if (failed == 0) {
         std::printf("\nSOLVED: every check passes.\n");
     } else {

@@ -175,7 +175,8 @@ int renderCommand(const RenderArgs& a) {
         return 1;
     }
     // ... and one whose other holes are still stubs says which ran
-    if (const std::string stubs = stubsRanNote(); !stubs.empty()) std::fprintf(stderr, "raycache: %s\n", stubs.c_str());
+    if (const std::string stubs = stubsRanNote(); !stubs.empty())
+        std::fprintf(stderr, "raycache: %s\n", stubs.c_str());
 
     if (!a.out.empty() || a.hash) {
         const std::vector<std::uint8_t> rgb = run.image.rgb8();

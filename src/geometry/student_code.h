@@ -27,6 +27,9 @@ bool isStudents(int tutorial);
 /// window titles and reports.
 std::string studentSummary();
 
+/// A tutorial's number as the tutorials name it: "03".
+std::string tutorialNumber(int tutorial);
+
 /// Called by a tutorial's stub as shipped: records that tutorial `tutorial`'s stub ran.
 void notYet(int tutorial);
 

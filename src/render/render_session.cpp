@@ -117,12 +117,11 @@ bool RenderSession::step() {
             // A miss at a parent flushes the entries of its children
             if (order_->flushesChildren()) paths_.flushBelow(task.node);
         }
-        if (options_.verify) {
-            // (an uncached answer of the linear scan is the verifier's own: nothing to compare)
-            const bool linear = options_.accel == AccelKind::Linear;
+        // (an uncached answer of the linear scan is the verifier's own: nothing to compare)
+        if (options_.verify &&
+            (lookup.decision != Decision::Uncached || options_.accel != AccelKind::Linear)) {
             Counters scratch;
-            if ((lookup.decision != Decision::Uncached || !linear) &&
-                !(verifier_.nearest(task.query, scratch) == lookup.answer()))
+            if (!(verifier_.nearest(task.query, scratch) == lookup.answer()))
                 ++counters_.verifyDisagreements;
         }
         // Shade: add to the pixel, spawn the children; the cache tree gives each its path

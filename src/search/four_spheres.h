@@ -7,8 +7,8 @@
 /// computed at once, and groups rejected whole stepped over by a loop that calls nothing,
 /// make a test a quarter to a third of its scalar cost (`raycache table1` prints a test's
 /// cost as "an object test"). Both users test through it, so the uncached scan rejects
-/// spheres the way the caches' lists do. It answers a tutorial (06), so this header holds a solution region:
-/// only the sources that test objects include it.
+/// spheres the way the caches' lists do. It answers a tutorial (06), so this header holds a
+/// solution region: only the sources that test objects include it.
 #include "search/object_test.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
